@@ -1,0 +1,45 @@
+// Turns the accumulated sums into the voxel volumes the later stages sample: mean albedo
+// (alpha = occupied), mean unit normal (zero where the normals cancel out) and mean emission.
+layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+
+#include "voxel_common.glsl"
+
+layout(rgba8, binding = 1) uniform writeonly image3D voxelAlbedo;
+layout(rgba8, binding = 2) uniform writeonly image3D voxelNormal;
+#if VOXEL_CHANNELS > 7
+layout(rgba16f, binding = 3) uniform writeonly image3D voxelEmission;
+uniform float emissionScale;
+#endif
+
+// Largest finite half float: emission beyond it would turn into Inf in an RGBA16F volume.
+const float maxHalf = 65504.0;
+
+void main()
+{
+  ivec3 v = ivec3(gl_GlobalInvocationID);
+  if (any(greaterThanEqual(v, ivec3(voxelResolution))))
+  {
+    return;
+  }
+  int i = voxelIndex(v);
+  uint count = voxelAccum[VOXEL_COUNT].value[i];
+  vec4 albedo = vec4(0.0);
+  vec4 normal = vec4(0.5, 0.5, 0.5, 0.0);
+  vec3 emission = vec3(0.0);
+  if (count > 0u)
+  {
+    float n = float(count);
+    albedo = vec4(VOXEL_MEAN(i, VOXEL_ALBEDO, n), 1.0);
+    vec3 m = VOXEL_MEAN(i, VOXEL_NORMAL, n) * 2.0 - 1.0;
+    float len = length(m);
+    normal = vec4((len > 1e-3 ? m / len : vec3(0.0)) * 0.5 + 0.5, 1.0);
+#if VOXEL_CHANNELS > 7
+    emission = min(VOXEL_MEAN(i, VOXEL_EMISSION, n) * emissionScale, vec3(maxHalf));
+#endif
+  }
+  imageStore(voxelAlbedo, v, albedo);
+  imageStore(voxelNormal, v, normal);
+#if VOXEL_CHANNELS > 7
+  imageStore(voxelEmission, v, vec4(emission, 1.0));
+#endif
+}

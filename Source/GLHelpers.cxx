@@ -1,0 +1,335 @@
+#include "GLHelpers.h"
+
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkTextureUnitManager.h"
+#include "vtk_glew.h"
+
+#include <vector>
+
+namespace voxelgi
+{
+
+//------------------------------------------------------------------------------
+ComputeProgram::~ComputeProgram()
+{
+  this->Release();
+}
+
+bool ComputeProgram::Build(const std::string& defines, const char* source, std::string& log)
+{
+  this->Release();
+  const std::string header = "#version 430 core\n" + defines;
+  const char* parts[2] = { header.c_str(), source };
+  GLuint shader = glCreateShader(GL_COMPUTE_SHADER);
+  glShaderSource(shader, 2, parts, nullptr);
+  glCompileShader(shader);
+  GLint ok = GL_FALSE;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  auto readLog = [&log](GLint length, auto getter) {
+    std::vector<char> text(static_cast<std::size_t>(length > 1 ? length : 1), '\0');
+    getter(static_cast<GLsizei>(text.size()), text.data());
+    log = text.data();
+  };
+  if (!ok)
+  {
+    GLint length = 0;
+    glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
+    readLog(length, [shader](GLsizei n, char* t) { glGetShaderInfoLog(shader, n, nullptr, t); });
+    glDeleteShader(shader);
+    return false;
+  }
+  GLuint program = glCreateProgram();
+  glAttachShader(program, shader);
+  glLinkProgram(program);
+  glDeleteShader(shader);
+  glGetProgramiv(program, GL_LINK_STATUS, &ok);
+  if (!ok)
+  {
+    GLint length = 0;
+    glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
+    readLog(length, [program](GLsizei n, char* t) { glGetProgramInfoLog(program, n, nullptr, t); });
+    glDeleteProgram(program);
+    return false;
+  }
+  this->Handle = program;
+  return true;
+}
+
+void ComputeProgram::Use(vtkOpenGLRenderWindow* renWin)
+{
+  renWin->GetShaderCache()->ReleaseCurrentShader();
+  glUseProgram(this->Handle);
+}
+
+void ComputeProgram::SetInt(const char* name, int value)
+{
+  glUniform1i(glGetUniformLocation(this->Handle, name), value);
+}
+
+void ComputeProgram::SetFloat(const char* name, float value)
+{
+  glUniform1f(glGetUniformLocation(this->Handle, name), value);
+}
+
+void ComputeProgram::DispatchCube(int n, int localSize)
+{
+  const GLuint groups = static_cast<GLuint>((n + localSize - 1) / localSize);
+  glDispatchCompute(groups, groups, groups);
+  glUseProgram(0);
+}
+
+void ComputeProgram::Release()
+{
+  if (this->Handle)
+  {
+    glDeleteProgram(this->Handle);
+    this->Handle = 0;
+  }
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+std::size_t BytesPerTexel(GLenum internalFormat)
+{
+  switch (internalFormat)
+  {
+    case GL_R8UI:
+      return 1;
+    case GL_RGBA8:
+    case GL_R32UI:
+    case GL_R32F:
+      return 4;
+    case GL_RGBA16F:
+      return 8;
+    case GL_RGBA32F:
+      return 16;
+    default:
+      return 4;
+  }
+}
+}
+
+Volume3D::~Volume3D()
+{
+  this->Release();
+}
+
+bool Volume3D::Allocate(unsigned int internalFormat, int resolution, int levels)
+{
+  if (this->Handle && this->Format == internalFormat && this->Size == resolution)
+  {
+    return true;
+  }
+  this->Release();
+  ClearErrors(); // so the check below reports this allocation only
+  glGenTextures(1, &this->Handle);
+  glBindTexture(GL_TEXTURE_3D, this->Handle);
+  glTexStorage3D(GL_TEXTURE_3D, levels, internalFormat, resolution, resolution, resolution);
+  const bool integer = internalFormat == GL_R8UI || internalFormat == GL_R32UI;
+  glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, integer ? GL_NEAREST : GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, integer ? GL_NEAREST : GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+  glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+  glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_BORDER);
+  glBindTexture(GL_TEXTURE_3D, 0);
+  if (glGetError() != GL_NO_ERROR)
+  {
+    this->Release();
+    return false;
+  }
+  this->Format = internalFormat;
+  this->Size = resolution;
+  const std::size_t n = static_cast<std::size_t>(resolution);
+  this->ByteSize = n * n * n * BytesPerTexel(internalFormat);
+  return true;
+}
+
+void Volume3D::BindImage(unsigned int unit, unsigned int access) const
+{
+  glBindImageTexture(unit, this->Handle, 0, GL_TRUE, 0, access, this->Format);
+}
+
+int Volume3D::BindSampler(vtkOpenGLRenderWindow* renWin) const
+{
+  const int unit = renWin->GetTextureUnitManager()->Allocate();
+  if (unit >= 0)
+  {
+    glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
+    glBindTexture(GL_TEXTURE_3D, this->Handle);
+  }
+  return unit;
+}
+
+void Volume3D::UnbindSampler(vtkOpenGLRenderWindow* renWin, int unit)
+{
+  if (unit >= 0)
+  {
+    glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
+    glBindTexture(GL_TEXTURE_3D, 0);
+    renWin->GetTextureUnitManager()->Free(unit);
+  }
+}
+
+void Volume3D::Read(unsigned int format, unsigned int type, void* data) const
+{
+  glBindTexture(GL_TEXTURE_3D, this->Handle);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glGetTexImage(GL_TEXTURE_3D, 0, format, type, data);
+  glBindTexture(GL_TEXTURE_3D, 0);
+}
+
+void Volume3D::Release()
+{
+  if (this->Handle)
+  {
+    glDeleteTextures(1, &this->Handle);
+    this->Handle = 0;
+  }
+  this->Format = 0;
+  this->Size = 0;
+  this->ByteSize = 0;
+}
+
+//------------------------------------------------------------------------------
+StorageBuffer::~StorageBuffer()
+{
+  this->Release();
+}
+
+bool StorageBuffer::Allocate(std::size_t bytes)
+{
+  if (this->Handle && this->ByteSize == bytes)
+  {
+    return true;
+  }
+  this->Release();
+  ClearErrors();
+  glGenBuffers(1, &this->Handle);
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Handle);
+  glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(bytes), nullptr, GL_DYNAMIC_COPY);
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  if (glGetError() != GL_NO_ERROR)
+  {
+    this->Release();
+    return false;
+  }
+  this->ByteSize = bytes;
+  return true;
+}
+
+void StorageBuffer::Bind(unsigned int index) const
+{
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, index, this->Handle);
+}
+
+void StorageBuffer::Read(std::size_t offset, std::size_t bytes, void* data) const
+{
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Handle);
+  glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, static_cast<GLintptr>(offset),
+    static_cast<GLsizeiptr>(bytes), data);
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+}
+
+void StorageBuffer::Release()
+{
+  if (this->Handle)
+  {
+    glDeleteBuffers(1, &this->Handle);
+    this->Handle = 0;
+  }
+  this->ByteSize = 0;
+}
+
+//------------------------------------------------------------------------------
+EmptyFramebuffer::~EmptyFramebuffer()
+{
+  this->Release();
+}
+
+unsigned int EmptyFramebuffer::Prepare(int width, int height)
+{
+  if (!this->Handle)
+  {
+    glGenFramebuffers(1, &this->Handle);
+  }
+  if (this->Width != width || this->Height != height)
+  {
+    GLint previous = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previous);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, this->Handle);
+    glFramebufferParameteri(GL_DRAW_FRAMEBUFFER, GL_FRAMEBUFFER_DEFAULT_WIDTH, width);
+    glFramebufferParameteri(GL_DRAW_FRAMEBUFFER, GL_FRAMEBUFFER_DEFAULT_HEIGHT, height);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(previous));
+    this->Width = width;
+    this->Height = height;
+  }
+  return this->Handle;
+}
+
+void EmptyFramebuffer::Release()
+{
+  if (this->Handle)
+  {
+    glDeleteFramebuffers(1, &this->Handle);
+    this->Handle = 0;
+  }
+  this->Width = this->Height = 0;
+}
+
+//------------------------------------------------------------------------------
+StageTimer::~StageTimer()
+{
+  this->Release();
+}
+
+void StageTimer::Begin()
+{
+  if (!this->Query)
+  {
+    glGenQueries(1, &this->Query);
+  }
+  glBeginQuery(GL_TIME_ELAPSED, this->Query);
+}
+
+void StageTimer::End()
+{
+  glEndQuery(GL_TIME_ELAPSED);
+  this->Pending = true;
+}
+
+double StageTimer::Milliseconds()
+{
+  if (!this->Pending)
+  {
+    return 0.0;
+  }
+  GLuint64 ns = 0;
+  glGetQueryObjectui64v(this->Query, GL_QUERY_RESULT, &ns);
+  this->Pending = false;
+  return static_cast<double>(ns) * 1e-6;
+}
+
+void StageTimer::Release()
+{
+  if (this->Query)
+  {
+    glDeleteQueries(1, &this->Query);
+    this->Query = 0;
+  }
+  this->Pending = false;
+}
+
+//------------------------------------------------------------------------------
+int ClearErrors()
+{
+  int count = 0;
+  while (glGetError() != GL_NO_ERROR && count < 64)
+  {
+    ++count;
+  }
+  return count;
+}
+
+}

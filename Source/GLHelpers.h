@@ -1,0 +1,139 @@
+/**
+ * Internal GL helpers of the VoxelGI stages: compute programs, 3D volumes with immutable
+ * storage and image binding, shader storage buffers, an attachment-less framebuffer and
+ * timer queries. The only place raw GL object boilerplate lives.
+ *
+ * All functions expect the render window's context to be current. Raw program binds are
+ * reported to VTK's shader cache so its notion of the bound program stays right.
+ */
+#ifndef VoxelGIGLHelpers_h
+#define VoxelGIGLHelpers_h
+
+#include <cstddef>
+#include <string>
+
+class vtkOpenGLRenderWindow;
+
+namespace voxelgi
+{
+
+/// A compute program built from one GLSL source (the `#version` line is prepended).
+class ComputeProgram
+{
+public:
+  ComputeProgram() = default;
+  ~ComputeProgram();
+  ComputeProgram(const ComputeProgram&) = delete;
+  ComputeProgram& operator=(const ComputeProgram&) = delete;
+
+  /// Compile and link `defines` + `source`; on failure returns false and fills `log`.
+  bool Build(const std::string& defines, const char* source, std::string& log);
+  bool IsReady() const { return this->Handle != 0; }
+
+  /// Bind the program (after telling VTK's shader cache to forget its current program).
+  void Use(vtkOpenGLRenderWindow* renWin);
+  void SetInt(const char* name, int value);
+  void SetFloat(const char* name, float value);
+  /// Dispatch enough groups of `localSize`^3 to cover `n`^3 invocations, then unbind.
+  void DispatchCube(int n, int localSize);
+  void Release();
+
+private:
+  unsigned int Handle = 0;
+};
+
+/// A 3D texture with immutable storage, usable as sampler and as image.
+class Volume3D
+{
+public:
+  Volume3D() = default;
+  ~Volume3D();
+  Volume3D(const Volume3D&) = delete;
+  Volume3D& operator=(const Volume3D&) = delete;
+
+  /// (Re)allocate `resolution`^3 texels of `internalFormat` with `levels` mip levels.
+  bool Allocate(unsigned int internalFormat, int resolution, int levels = 1);
+  bool IsAllocated() const { return this->Handle != 0; }
+  void BindImage(unsigned int unit, unsigned int access) const;
+  /// Bind for sampling on a unit taken from the window's texture unit manager.
+  int BindSampler(vtkOpenGLRenderWindow* renWin) const;
+  static void UnbindSampler(vtkOpenGLRenderWindow* renWin, int unit);
+  /// Read level 0 back into `data`, which must hold Bytes() for the given format/type.
+  void Read(unsigned int format, unsigned int type, void* data) const;
+  std::size_t Bytes() const { return this->ByteSize; }
+  int Resolution() const { return this->Size; }
+  void Release();
+
+private:
+  unsigned int Handle = 0;
+  unsigned int Format = 0;
+  int Size = 0;
+  std::size_t ByteSize = 0;
+};
+
+/// A shader storage buffer.
+class StorageBuffer
+{
+public:
+  StorageBuffer() = default;
+  ~StorageBuffer();
+  StorageBuffer(const StorageBuffer&) = delete;
+  StorageBuffer& operator=(const StorageBuffer&) = delete;
+
+  bool Allocate(std::size_t bytes);
+  bool IsAllocated() const { return this->Handle != 0; }
+  void Bind(unsigned int index) const;
+  void Read(std::size_t offset, std::size_t bytes, void* data) const;
+  std::size_t Bytes() const { return this->ByteSize; }
+  void Release();
+
+private:
+  unsigned int Handle = 0;
+  std::size_t ByteSize = 0;
+};
+
+/// A framebuffer without attachments: rasterization only, for image/buffer side effects.
+class EmptyFramebuffer
+{
+public:
+  EmptyFramebuffer() = default;
+  ~EmptyFramebuffer();
+  EmptyFramebuffer(const EmptyFramebuffer&) = delete;
+  EmptyFramebuffer& operator=(const EmptyFramebuffer&) = delete;
+
+  /// Create (or resize) and return the framebuffer name, to bind through vtkOpenGLState.
+  unsigned int Prepare(int width, int height);
+  void Release();
+
+private:
+  unsigned int Handle = 0;
+  int Width = 0;
+  int Height = 0;
+};
+
+/// A GL_TIME_ELAPSED query around one stage.
+class StageTimer
+{
+public:
+  StageTimer() = default;
+  ~StageTimer();
+  StageTimer(const StageTimer&) = delete;
+  StageTimer& operator=(const StageTimer&) = delete;
+
+  void Begin();
+  void End();
+  /// Milliseconds of the last Begin/End pair (waits for the GPU); 0 if none.
+  double Milliseconds();
+  void Release();
+
+private:
+  unsigned int Query = 0;
+  bool Pending = false;
+};
+
+/// Drain the GL error queue; returns the number of errors that were pending.
+int ClearErrors();
+
+}
+
+#endif

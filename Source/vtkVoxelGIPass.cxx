@@ -1,0 +1,741 @@
+#include "vtkVoxelGIPass.h"
+
+#include "GLHelpers.h"
+#include "VoxelDebugView.h"
+#include "VoxelGrid.h"
+#include "Voxelizer.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkDataObject.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationDoubleVectorKey.h"
+#include "vtkInformationIntegerKey.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLPolyDataMapper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
+#include "vtkPointData.h"
+#include "vtkProperty.h"
+#include "vtkPropCollection.h"
+#include "vtkRenderState.h"
+#include "vtkRenderStepsPass.h"
+#include "vtkRenderer.h"
+#include "vtkTypeUInt32Array.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkFloatArray.h"
+#include "vtkWeakPointer.h"
+#include "vtk_glew.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <unordered_map>
+#include <vector>
+
+vtkStandardNewMacro(vtkVoxelGIPass);
+vtkCxxSetObjectMacro(vtkVoxelGIPass, DelegatePass, vtkRenderPass);
+vtkInformationKeyRestrictedMacro(vtkVoxelGIPass, EMISSION, DoubleVector, 3);
+vtkInformationKeyMacro(vtkVoxelGIPass, DYNAMIC, Integer);
+
+namespace
+{
+constexpr int MinResolution = 16;
+constexpr int MaxResolution = 512;
+
+// What the scan remembers of an actor between frames.
+struct ActorRecord
+{
+  vtkWeakPointer<vtkActor> Actor;
+  vtkMTimeType Signature = 0; // latest modification time of actor, mapper and input
+  std::array<double, 3> Emission{ { 0.0, 0.0, 0.0 } };
+  bool UserDynamic = false;
+  bool Dynamic = false; // user choice, or changed after voxelization (AutoDynamic)
+};
+
+std::array<double, 3> PropEmission(vtkProp* prop)
+{
+  std::array<double, 3> e{ { 0.0, 0.0, 0.0 } };
+  vtkInformation* info = prop->GetPropertyKeys();
+  if (info && info->Has(vtkVoxelGIPass::EMISSION()))
+  {
+    const double* v = info->Get(vtkVoxelGIPass::EMISSION());
+    for (int c = 0; c < 3; ++c)
+    {
+      // Keys set around SetPropEmission() may still hold bad values: never let them through.
+      e[c] = std::isfinite(v[c]) ? std::max(v[c], 0.0) : 0.0;
+    }
+  }
+  return e;
+}
+
+bool PropUserDynamic(vtkProp* prop)
+{
+  vtkInformation* info = prop->GetPropertyKeys();
+  return info && info->Has(vtkVoxelGIPass::DYNAMIC()) && info->Get(vtkVoxelGIPass::DYNAMIC());
+}
+
+vtkInformation* EnsurePropertyKeys(vtkProp* prop)
+{
+  if (!prop->GetPropertyKeys())
+  {
+    vtkNew<vtkInformation> info;
+    prop->SetPropertyKeys(info);
+  }
+  return prop->GetPropertyKeys();
+}
+
+vtkMTimeType ActorSignature(vtkActor* actor)
+{
+  vtkMTimeType t = actor->GetMTime();
+  vtkMapper* mapper = actor->GetMapper();
+  t = std::max(t, mapper->GetMTime());
+  if (vtkDataObject* input = mapper->GetInputDataObject(0, 0))
+  {
+    t = std::max(t, input->GetMTime());
+  }
+  return t;
+}
+}
+
+struct vtkVoxelGIPass::Internals
+{
+  voxelgi::Voxelizer Voxels;
+  voxelgi::VoxelDebugView Debug;
+  voxelgi::EmptyFramebuffer Framebuffer;
+  voxelgi::VoxelGrid Grid;
+  std::array<voxelgi::StageTimer, NUMBER_OF_STAGES> Timers;
+  std::array<bool, NUMBER_OF_STAGES> Ran{};
+  std::array<double, NUMBER_OF_STAGES> Times{};
+  std::vector<ActorRecord> Records;
+  double EmissionScale = 0.0;
+  double FittedPadding = -1.0;
+  bool Voxelized = false;
+  bool StaticPass = false;
+  vtkNew<vtkCamera> VoxelCamera;
+  vtkTimeStamp ShaderStageTime;
+  vtkWeakPointer<vtkOpenGLRenderWindow> Window;
+  bool ContextChecked = false;
+  bool ContextOk = false;
+
+  void BeginStage(int stage, bool timed)
+  {
+    this->Ran[stage] = true;
+    if (timed)
+    {
+      this->Timers[stage].Begin();
+    }
+  }
+  void EndStage(int stage, bool timed)
+  {
+    if (timed)
+    {
+      this->Timers[stage].End();
+    }
+  }
+};
+
+//------------------------------------------------------------------------------
+vtkVoxelGIPass::vtkVoxelGIPass()
+  : Internal(new Internals)
+{
+  vtkNew<vtkRenderStepsPass> steps;
+  this->SetDelegatePass(steps);
+}
+
+vtkVoxelGIPass::~vtkVoxelGIPass()
+{
+  this->SetDelegatePass(nullptr);
+}
+
+//------------------------------------------------------------------------------
+void vtkVoxelGIPass::SetVoxelResolution(int resolution)
+{
+  const int clamped = voxelgi::ClampResolution(resolution, MinResolution, MaxResolution);
+  if (clamped != resolution)
+  {
+    vtkWarningMacro(<< "VoxelResolution " << resolution
+                    << " is not a power of two in [16, 512]; using " << clamped << ".");
+  }
+  if (clamped != this->VoxelResolution)
+  {
+    this->VoxelResolution = clamped;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkVoxelGIPass::SetPropEmission(vtkProp* prop, double r, double g, double b)
+{
+  if (!prop)
+  {
+    return;
+  }
+  const double rgb[3] = { r, g, b };
+  for (double v : rgb)
+  {
+    if (!std::isfinite(v) || v < 0.0)
+    {
+      vtkGenericWarningMacro(<< "vtkVoxelGIPass::SetPropEmission: emission (" << r << ", " << g
+                             << ", " << b
+                             << ") must be finite and non-negative; the prop's emission is left "
+                                "unchanged.");
+      return;
+    }
+  }
+  vtkInformation* info = EnsurePropertyKeys(prop);
+  if (r == 0.0 && g == 0.0 && b == 0.0)
+  {
+    info->Remove(EMISSION());
+  }
+  else
+  {
+    info->Set(EMISSION(), rgb, 3);
+  }
+}
+
+void vtkVoxelGIPass::SetPropDynamic(vtkProp* prop, bool dynamic)
+{
+  if (prop)
+  {
+    EnsurePropertyKeys(prop)->Set(DYNAMIC(), dynamic ? 1 : 0);
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkVoxelGIPass::GetStageRan(int stage) const
+{
+  return stage >= 0 && stage < NUMBER_OF_STAGES && this->Internal->Ran[stage];
+}
+
+double vtkVoxelGIPass::GetStageTime(int stage) const
+{
+  return (stage >= 0 && stage < NUMBER_OF_STAGES) ? this->Internal->Times[stage] : 0.0;
+}
+
+const char* vtkVoxelGIPass::GetStageName(int stage)
+{
+  static const char* names[NUMBER_OF_STAGES] = { "Clear", "VoxelizeStatic", "VoxelizeDynamic",
+    "Resolve", "DebugView" };
+  return (stage >= 0 && stage < NUMBER_OF_STAGES) ? names[stage] : "Unknown";
+}
+
+int vtkVoxelGIPass::GetGridResolution() const
+{
+  return this->Internal->Grid.Resolution;
+}
+
+void vtkVoxelGIPass::GetGridOrigin(double origin[3]) const
+{
+  for (int a = 0; a < 3; ++a)
+  {
+    origin[a] = this->Internal->Grid.Origin[a];
+  }
+}
+
+double vtkVoxelGIPass::GetGridVoxelSize() const
+{
+  return this->Internal->Grid.VoxelSize;
+}
+
+unsigned long long vtkVoxelGIPass::GetVoxelMemoryBytes() const
+{
+  return this->Internal->Voxels.MemoryBytes();
+}
+
+//------------------------------------------------------------------------------
+bool vtkVoxelGIPass::CheckContext(vtkRenderWindow* renWin)
+{
+  Internals& in = *this->Internal;
+  if (in.ContextChecked && renWin == in.Window.GetPointer())
+  {
+    return in.ContextOk;
+  }
+  GLint major = 0, minor = 0;
+  glGetIntegerv(GL_MAJOR_VERSION, &major);
+  glGetIntegerv(GL_MINOR_VERSION, &minor);
+  in.ContextChecked = true;
+  in.ContextOk = major > 4 || (major == 4 && minor >= 3);
+  if (!in.ContextOk)
+  {
+    vtkErrorMacro(<< "Voxel GI needs OpenGL 4.3 (compute shaders, image load/store, shader "
+                     "storage buffers) but this context provides "
+                  << major << "." << minor << ". Rendering without GI.");
+  }
+  return in.ContextOk;
+}
+
+//------------------------------------------------------------------------------
+void vtkVoxelGIPass::Render(const vtkRenderState* s)
+{
+  Internals& in = *this->Internal;
+  this->NumberOfRenderedProps = 0;
+  in.Ran.fill(false);
+  in.Times.fill(0.0);
+  this->GIActive = false;
+
+  vtkRenderer* renderer = s->GetRenderer();
+  auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  // Hardware picking renders through the pass too: it must see VTK's plain render steps.
+  if (this->Enabled && renWin && !renderer->GetSelector() && this->CheckContext(renWin))
+  {
+    in.Window = renWin;
+    this->GIActive = this->UpdateVoxels(s);
+  }
+
+  this->RenderDelegate(s);
+
+  if (this->GIActive && this->DebugView != DEBUG_VIEW_NONE)
+  {
+    in.BeginStage(STAGE_DEBUG_VIEW, this->TimeStages);
+    in.Debug.Render(renderer, in.Grid, in.Voxels, this->DebugView);
+    in.EndStage(STAGE_DEBUG_VIEW, this->TimeStages);
+  }
+
+  // Changes made while rendering (a mapper creating its default lookup table, say) are part
+  // of this frame, not news for the next one.
+  for (ActorRecord& record : in.Records)
+  {
+    if (record.Actor)
+    {
+      record.Signature = ActorSignature(record.Actor);
+    }
+  }
+
+  if (this->TimeStages)
+  {
+    for (int stage = 0; stage < NUMBER_OF_STAGES; ++stage)
+    {
+      in.Times[stage] = in.Ran[stage] ? in.Timers[stage].Milliseconds() : 0.0;
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkVoxelGIPass::RenderDelegate(const vtkRenderState* s)
+{
+  if (this->DelegatePass)
+  {
+    this->DelegatePass->Render(s);
+    this->NumberOfRenderedProps += this->DelegatePass->GetNumberOfRenderedProps();
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkVoxelGIPass::UpdateVoxels(const vtkRenderState* s)
+{
+  Internals& in = *this->Internal;
+  vtkRenderer* renderer = s->GetRenderer();
+
+  // Scene scan: every visible opaque surface actor drawn by a polydata mapper, including
+  // the ones outside the view frustum (they still cast and reflect light).
+  std::unordered_map<vtkActor*, ActorRecord> previous;
+  for (const ActorRecord& record : in.Records)
+  {
+    if (record.Actor)
+    {
+      previous[record.Actor] = record;
+    }
+  }
+  std::vector<ActorRecord> records;
+  double bounds[6];
+  vtkMath::UninitializeBounds(bounds);
+  bool haveBounds = false;
+  vtkPropCollection* props = renderer->GetViewProps();
+  vtkCollectionSimpleIterator it;
+  props->InitTraversal(it);
+  while (vtkProp* prop = props->GetNextProp(it))
+  {
+    vtkActor* actor = vtkActor::SafeDownCast(prop);
+    if (!actor || !actor->GetVisibility() || !vtkOpenGLPolyDataMapper::SafeDownCast(actor->GetMapper()) ||
+      actor->GetProperty()->GetRepresentation() != VTK_SURFACE)
+    {
+      continue;
+    }
+    actor->GetMapper()->Update();
+    if (!actor->HasOpaqueGeometry())
+    {
+      continue;
+    }
+    const double* b = actor->GetBounds();
+    if (!b || !vtkMath::AreBoundsInitialized(b))
+    {
+      continue;
+    }
+    if (!std::all_of(b, b + 6, [](double v) { return std::isfinite(v); }))
+    {
+      vtkWarningMacro(<< "An actor has non-finite bounds (NaN or Inf coordinates); it is left "
+                         "out of the voxel grid.");
+      continue;
+    }
+    EnsurePropertyKeys(actor);
+    ActorRecord record;
+    record.Actor = actor;
+    record.Signature = ActorSignature(actor);
+    record.Emission = PropEmission(actor);
+    record.UserDynamic = PropUserDynamic(actor);
+    auto found = previous.find(actor);
+    record.Dynamic = record.UserDynamic || (found != previous.end() && found->second.Dynamic);
+    for (int i = 0; i < 3; ++i)
+    {
+      bounds[2 * i] = haveBounds ? std::min(bounds[2 * i], b[2 * i]) : b[2 * i];
+      bounds[2 * i + 1] = haveBounds ? std::max(bounds[2 * i + 1], b[2 * i + 1]) : b[2 * i + 1];
+    }
+    haveBounds = true;
+    records.push_back(record);
+  }
+  if (records.empty())
+  {
+    in.Records.clear();
+    return false;
+  }
+
+  // Change detection against the end of the last frame.
+  bool full = !in.Voxelized || records.size() != in.Records.size();
+  bool dynamicChanged = false;
+  for (std::size_t i = 0; i < records.size(); ++i)
+  {
+    ActorRecord& record = records[i];
+    if (full || in.Records[i].Actor.GetPointer() != record.Actor.GetPointer())
+    {
+      full = true;
+      continue;
+    }
+    const ActorRecord& old = in.Records[i];
+    const bool changed = record.Signature > old.Signature || record.Emission != old.Emission;
+    if (record.UserDynamic != old.UserDynamic)
+    {
+      full = true; // the static/dynamic split itself changed
+    }
+    else if (changed && record.Dynamic)
+    {
+      dynamicChanged = true;
+    }
+    else if (changed)
+    {
+      full = true;
+      record.Dynamic = this->AutoDynamic != 0;
+    }
+  }
+
+  double emissionScale = 0.0;
+  for (const ActorRecord& record : records)
+  {
+    emissionScale = std::max(
+      { emissionScale, record.Emission[0], record.Emission[1], record.Emission[2] });
+  }
+  // Emission is stored relative to the scene's brightest emitter.
+  if (emissionScale != in.EmissionScale)
+  {
+    full = true;
+  }
+
+  // Grid: refit when the scene left it, shrank to under half of it, or the settings changed.
+  voxelgi::VoxelGrid grid = in.Grid;
+  const double extent = std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] });
+  const bool refit = !grid.IsValid() || grid.Resolution != this->VoxelResolution ||
+    in.FittedPadding != this->GridPadding || !grid.Covers(bounds) ||
+    extent * (1.0 + 2.0 * this->GridPadding) < 0.5 * grid.Size();
+  if (refit)
+  {
+    if (voxelgi::FitVoxelGrid(bounds, this->VoxelResolution, this->GridPadding, grid) !=
+      voxelgi::FitStatus::Ok)
+    {
+      vtkErrorMacro(<< "Could not fit a voxel grid around the scene bounds; rendering without GI.");
+      in.Records.clear();
+      return false;
+    }
+    full = true;
+  }
+
+  const bool emission = emissionScale > 0.0;
+  if (emission != in.Voxels.HasEmission() || grid.Resolution != in.Voxels.GetResolution())
+  {
+    std::string error;
+    if (!in.Voxels.Prepare(grid.Resolution, emission, error))
+    {
+      vtkErrorMacro(<< "Voxel GI disabled for this frame: " << error << ".");
+      in.Records.clear();
+      in.Voxelized = false;
+      return false;
+    }
+    in.ShaderStageTime.Modified(); // the mapper shaders depend on the emission variant
+    full = true;
+  }
+
+  in.Grid = grid;
+  in.FittedPadding = this->GridPadding;
+  in.EmissionScale = emissionScale;
+  in.Records = records;
+
+  if (full || dynamicChanged)
+  {
+    this->VoxelizeActors(renderer, full);
+    in.Voxelized = true;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkVoxelGIPass::VoxelizeActors(vtkRenderer* renderer, bool full)
+{
+  Internals& in = *this->Internal;
+  vtkOpenGLRenderWindow* renWin = in.Window;
+  vtkOpenGLState* ostate = renWin->GetState();
+  const bool timed = this->TimeStages != 0;
+  const int res = in.Grid.Resolution;
+
+  in.BeginStage(STAGE_CLEAR, timed);
+  in.Voxels.Clear(renWin, full);
+  in.EndStage(STAGE_CLEAR, timed);
+
+  std::vector<vtkProp*> staticProps;
+  std::vector<vtkProp*> dynamicProps;
+  for (const ActorRecord& record : in.Records)
+  {
+    (record.Dynamic ? dynamicProps : staticProps).push_back(record.Actor);
+  }
+  std::vector<vtkProp*> all(staticProps);
+  all.insert(all.end(), dynamicProps.begin(), dynamicProps.end());
+
+  // An orthographic camera whose view volume is the grid cube: VTK's mappers then compose
+  // model, shift-scale and grid matrices in double precision for us.
+  const glm::dvec3 center = in.Grid.Center();
+  const double half = 0.5 * in.Grid.Size();
+  vtkCamera* camera = in.VoxelCamera;
+  camera->SetFocalPoint(center.x, center.y, center.z);
+  camera->SetPosition(center.x, center.y, center.z + half);
+  camera->SetViewUp(0.0, 1.0, 0.0);
+  vtkNew<vtkMatrix4x4> projection;
+  projection->SetElement(0, 0, 1.0 / half);
+  projection->SetElement(1, 1, 1.0 / half);
+  projection->SetElement(2, 2, 1.0 / half);
+  projection->SetElement(2, 3, 1.0);
+  camera->SetExplicitProjectionTransformMatrix(projection);
+  camera->SetUseExplicitProjectionTransformMatrix(true);
+
+  vtkCamera* userCamera = renderer->GetActiveCamera();
+  userCamera->Register(this);
+  renderer->SetActiveCamera(camera);
+
+  ostate->PushFramebufferBindings();
+  ostate->vtkglBindFramebuffer(GL_FRAMEBUFFER, in.Framebuffer.Prepare(res, res));
+  {
+    vtkOpenGLState::ScopedglViewport viewport(ostate);
+    vtkOpenGLState::ScopedglEnableDisable scissor(ostate, GL_SCISSOR_TEST);
+    vtkOpenGLState::ScopedglEnableDisable depth(ostate, GL_DEPTH_TEST);
+    vtkOpenGLState::ScopedglEnableDisable blend(ostate, GL_BLEND);
+    vtkOpenGLState::ScopedglEnableDisable cull(ostate, GL_CULL_FACE);
+    ostate->vtkglViewport(0, 0, res, res);
+    ostate->vtkglDisable(GL_SCISSOR_TEST);
+    ostate->vtkglDisable(GL_DEPTH_TEST);
+    ostate->vtkglDisable(GL_BLEND);
+    // Depth is computed in the shader; clamping keeps the rasterizer from clipping it.
+    glEnable(GL_DEPTH_CLAMP);
+
+    vtkRenderState state(renderer);
+    state.SetPropArrayAndCount(all.data(), static_cast<int>(all.size()));
+    this->PreRender(&state);
+    in.Voxels.BindForRendering();
+    if (full)
+    {
+      in.BeginStage(STAGE_VOXELIZE_STATIC, timed);
+      in.StaticPass = true;
+      for (vtkProp* prop : staticProps)
+      {
+        prop->RenderOpaqueGeometry(renderer);
+      }
+      voxelgi::Voxelizer::Barrier();
+      in.EndStage(STAGE_VOXELIZE_STATIC, timed);
+    }
+    if (!dynamicProps.empty())
+    {
+      in.BeginStage(STAGE_VOXELIZE_DYNAMIC, timed);
+      in.StaticPass = false;
+      in.Voxels.BindForRendering();
+      for (vtkProp* prop : dynamicProps)
+      {
+        prop->RenderOpaqueGeometry(renderer);
+      }
+      voxelgi::Voxelizer::Barrier();
+      in.EndStage(STAGE_VOXELIZE_DYNAMIC, timed);
+    }
+    this->PostRender(&state);
+    glDisable(GL_DEPTH_CLAMP);
+  }
+  ostate->PopFramebufferBindings();
+
+  renderer->SetActiveCamera(userCamera);
+  userCamera->UnRegister(this);
+
+  // Line and point primitives of mixed polydata cannot feed the triangle geometry shader;
+  // GL rejects those draws (they have no area to voxelize). Do not leave the errors to VTK.
+  voxelgi::ClearErrors();
+
+  in.BeginStage(STAGE_RESOLVE, timed);
+  in.Voxels.Resolve(renWin, static_cast<float>(in.EmissionScale));
+  in.EndStage(STAGE_RESOLVE, timed);
+}
+
+//------------------------------------------------------------------------------
+bool vtkVoxelGIPass::PreReplaceShaderValues(std::string&, std::string& geometryShader,
+  std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
+{
+  voxelgi::Voxelizer::PreReplaceShaders(geometryShader, fragmentShader);
+  return true;
+}
+
+bool vtkVoxelGIPass::PostReplaceShaderValues(std::string&, std::string& geometryShader,
+  std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
+{
+  this->Internal->Voxels.PostReplaceShaders(geometryShader, fragmentShader);
+  return true;
+}
+
+bool vtkVoxelGIPass::SetShaderParameters(
+  vtkShaderProgram* program, vtkAbstractMapper*, vtkProp* prop, vtkOpenGLVertexArrayObject*)
+{
+  const Internals& in = *this->Internal;
+  std::array<double, 3> emission = PropEmission(prop);
+  for (double& e : emission)
+  {
+    e = in.EmissionScale > 0.0 ? e / in.EmissionScale : 0.0;
+  }
+  in.Voxels.SetShaderParameters(program, in.StaticPass, emission.data());
+  return true;
+}
+
+vtkMTimeType vtkVoxelGIPass::GetShaderStageMTime()
+{
+  return this->Internal->ShaderStageTime.GetMTime();
+}
+
+//------------------------------------------------------------------------------
+bool vtkVoxelGIPass::GetVoxelVolume(int volume, vtkImageData* image)
+{
+  Internals& in = *this->Internal;
+  const int res = in.Voxels.GetResolution();
+  if (!image || !in.Window || res <= 0 || (volume == VOLUME_EMISSION && !in.Voxels.HasEmission()))
+  {
+    return false;
+  }
+  in.Window->MakeCurrent();
+  image->Initialize();
+  image->SetDimensions(res, res, res);
+  image->SetSpacing(in.Grid.VoxelSize, in.Grid.VoxelSize, in.Grid.VoxelSize);
+  const double h = 0.5 * in.Grid.VoxelSize;
+  image->SetOrigin(in.Grid.Origin.x + h, in.Grid.Origin.y + h, in.Grid.Origin.z + h);
+  const vtkIdType n = static_cast<vtkIdType>(res) * res * res;
+  vtkSmartPointer<vtkDataArray> array;
+  switch (volume)
+  {
+    case VOLUME_ALBEDO:
+    case VOLUME_NORMAL:
+    {
+      auto bytes = vtkSmartPointer<vtkUnsignedCharArray>::New();
+      bytes->SetNumberOfComponents(4);
+      bytes->SetNumberOfTuples(n);
+      (volume == VOLUME_ALBEDO ? in.Voxels.AlbedoVolume : in.Voxels.NormalVolume)
+        .Read(GL_RGBA, GL_UNSIGNED_BYTE, bytes->GetPointer(0));
+      array = bytes;
+      break;
+    }
+    case VOLUME_EMISSION:
+    {
+      auto floats = vtkSmartPointer<vtkFloatArray>::New();
+      floats->SetNumberOfComponents(4);
+      floats->SetNumberOfTuples(n);
+      in.Voxels.EmissionVolume.Read(GL_RGBA, GL_FLOAT, floats->GetPointer(0));
+      array = floats;
+      break;
+    }
+    case VOLUME_COUNT:
+    {
+      std::vector<unsigned int> counts;
+      in.Voxels.ReadCounts(counts);
+      auto uints = vtkSmartPointer<vtkTypeUInt32Array>::New();
+      uints->SetNumberOfTuples(n);
+      std::copy(counts.begin(), counts.end(), uints->GetPointer(0));
+      array = uints;
+      break;
+    }
+    case VOLUME_FLAG:
+    {
+      std::vector<unsigned char> flags;
+      in.Voxels.ReadFlags(flags);
+      auto bytes = vtkSmartPointer<vtkUnsignedCharArray>::New();
+      bytes->SetNumberOfTuples(n);
+      std::copy(flags.begin(), flags.end(), bytes->GetPointer(0));
+      array = bytes;
+      break;
+    }
+    default:
+      return false;
+  }
+  array->SetName("Voxels");
+  image->GetPointData()->SetScalars(array);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkVoxelGIPass::ReleaseGraphicsResources(vtkWindow* w)
+{
+  Internals& in = *this->Internal;
+  in.Voxels.ReleaseGraphicsResources();
+  in.Debug.ReleaseGraphicsResources(w);
+  in.Framebuffer.Release();
+  for (auto& timer : in.Timers)
+  {
+    timer.Release();
+  }
+  in.Voxelized = false;
+  in.Records.clear();
+  in.Grid = voxelgi::VoxelGrid();
+  in.ContextChecked = false;
+  if (this->DelegatePass)
+  {
+    this->DelegatePass->ReleaseGraphicsResources(w);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkVoxelGIPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "DelegatePass: ";
+  if (this->DelegatePass)
+  {
+    this->DelegatePass->PrintSelf(os, indent.GetNextIndent());
+  }
+  else
+  {
+    os << "(none)\n";
+  }
+  os << indent << "Enabled: " << this->Enabled << "\n";
+  os << indent << "VoxelResolution: " << this->VoxelResolution << "\n";
+  os << indent << "GridPadding: " << this->GridPadding << "\n";
+  os << indent << "DebugView: " << this->DebugView << "\n";
+  os << indent << "AutoDynamic: " << this->AutoDynamic << "\n";
+  os << indent << "TimeStages: " << this->TimeStages << "\n";
+  os << indent << "GIActive: " << this->GIActive << "\n";
+  const Internals& in = *this->Internal;
+  os << indent << "Grid: " << in.Grid.Resolution << "^3 voxels of " << in.Grid.VoxelSize
+     << " from (" << in.Grid.Origin.x << ", " << in.Grid.Origin.y << ", " << in.Grid.Origin.z
+     << ")\n";
+  os << indent << "VoxelMemoryBytes: " << this->GetVoxelMemoryBytes() << "\n";
+  for (int stage = 0; stage < NUMBER_OF_STAGES; ++stage)
+  {
+    os << indent << "Stage " << GetStageName(stage) << ": "
+       << (in.Ran[stage] ? "ran" : "skipped");
+    if (in.Ran[stage] && this->TimeStages)
+    {
+      os << ", " << in.Times[stage] << " ms";
+    }
+    os << "\n";
+  }
+}

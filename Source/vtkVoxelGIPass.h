@@ -1,0 +1,247 @@
+/**
+ * @class   vtkVoxelGIPass
+ * @brief   Real-time voxel global illumination (deferred voxel shading) as a render pass.
+ *
+ * vtkVoxelGIPass wraps VTK's normal render steps (its delegate pass, by default a
+ * vtkRenderStepsPass) and adds voxel global illumination around them. Each frame it scans
+ * the renderer's actors and, only when something changed, voxelizes them into 3D volumes of
+ * albedo, normal and emission. Voxelization renders every visible opaque surface actor
+ * through its own VTK mapper with shader replacements from this pass, so scalar colouring
+ * with a lookup table, textures, per-actor colour and transforms voxelize with the colour
+ * VTK shows. Rasterization is conservative (no voxel a triangle touches is missed) and the
+ * per-voxel averages are exact integer sums that do not overflow.
+ *
+ * Actors are static unless marked dynamic (SetPropDynamic()) or, with AutoDynamic on,
+ * once they change after having been voxelized: dynamic actors are revoxelized alone while
+ * the static voxels are kept.
+ *
+ * With Enabled off, the pass renders exactly what its delegate renders. GI needs OpenGL 4.3
+ * (compute shaders, image load/store, shader storage buffers); on an older context the pass
+ * reports it once and keeps rendering VTK's image.
+ *
+ * @code
+ * vtkNew<vtkVoxelGIPass> gi;
+ * renderer->SetPass(gi);
+ * gi->SetVoxelResolution(128);
+ * renderWindow->Render();
+ * @endcode
+ *
+ * @sa vtkSSAOPass vtkRenderStepsPass
+ */
+#ifndef vtkVoxelGIPass_h
+#define vtkVoxelGIPass_h
+
+#include "vtkOpenGLRenderPass.h"
+#include "vtkRenderingVoxelGIModule.h" // for export macro
+
+#include <memory> // for std::unique_ptr
+
+class vtkImageData;
+class vtkInformationDoubleVectorKey;
+class vtkInformationIntegerKey;
+class vtkProp;
+class vtkRenderPass;
+class vtkRenderWindow;
+
+class VTKRENDERINGVOXELGI_EXPORT vtkVoxelGIPass : public vtkOpenGLRenderPass
+{
+public:
+  static vtkVoxelGIPass* New();
+  vtkTypeMacro(vtkVoxelGIPass, vtkOpenGLRenderPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * Render VTK's image through the delegate and the GI stages around it.
+   */
+  void Render(const vtkRenderState* s) override;
+
+  /**
+   * Release the GPU volumes, programs and the delegate's resources.
+   */
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+
+  ///@{
+  /**
+   * The pass that renders VTK's own image (default: a vtkRenderStepsPass).
+   */
+  virtual void SetDelegatePass(vtkRenderPass* delegatePass);
+  vtkGetObjectMacro(DelegatePass, vtkRenderPass);
+  ///@}
+
+  ///@{
+  /**
+   * Turn global illumination on or off. Off renders exactly what the delegate renders and
+   * does no voxel work. Default: on.
+   */
+  vtkSetMacro(Enabled, vtkTypeBool);
+  vtkGetMacro(Enabled, vtkTypeBool);
+  vtkBooleanMacro(Enabled, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
+   * Voxels per axis of the voxel grid: a power of two in [16, 512] (other values are
+   * rounded to the nearest one). Memory grows with its cube: about 40 bytes per voxel
+   * (128: 84 MiB, 256: 670 MiB). Default: 128.
+   */
+  virtual void SetVoxelResolution(int resolution);
+  vtkGetMacro(VoxelResolution, int);
+  ///@}
+
+  ///@{
+  /**
+   * Space left around the scene in the voxel grid, as a fraction of the scene's largest
+   * extent on each side, in [0, 0.5]. Default: 0.05.
+   */
+  vtkSetClampMacro(GridPadding, double, 0.0, 0.5);
+  vtkGetMacro(GridPadding, double);
+  ///@}
+
+  enum DebugViews
+  {
+    DEBUG_VIEW_NONE = 0,
+    DEBUG_VIEW_VOXEL_ALBEDO = 1,
+    DEBUG_VIEW_VOXEL_NORMAL = 2,
+    DEBUG_VIEW_VOXEL_EMISSION = 3
+  };
+
+  ///@{
+  /**
+   * Show a voxel volume as the image instead of the shaded scene: the first voxel along
+   * each camera ray, with its albedo, normal (xyz mapped to rgb) or emission (tone mapped
+   * e / (1 + e)). Default: DEBUG_VIEW_NONE.
+   */
+  vtkSetClampMacro(DebugView, int, DEBUG_VIEW_NONE, DEBUG_VIEW_VOXEL_EMISSION);
+  vtkGetMacro(DebugView, int);
+  void SetDebugViewToNone() { this->SetDebugView(DEBUG_VIEW_NONE); }
+  void SetDebugViewToVoxelAlbedo() { this->SetDebugView(DEBUG_VIEW_VOXEL_ALBEDO); }
+  void SetDebugViewToVoxelNormal() { this->SetDebugView(DEBUG_VIEW_VOXEL_NORMAL); }
+  void SetDebugViewToVoxelEmission() { this->SetDebugView(DEBUG_VIEW_VOXEL_EMISSION); }
+  ///@}
+
+  ///@{
+  /**
+   * Treat an actor that changes after it was voxelized as dynamic from then on, so later
+   * changes revoxelize it alone instead of the whole scene. Default: on.
+   */
+  vtkSetMacro(AutoDynamic, vtkTypeBool);
+  vtkGetMacro(AutoDynamic, vtkTypeBool);
+  vtkBooleanMacro(AutoDynamic, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
+   * Measure each stage's GPU time with timer queries (GetStageTime()). Waiting for the
+   * results costs a little, hence off by default.
+   */
+  vtkSetMacro(TimeStages, vtkTypeBool);
+  vtkGetMacro(TimeStages, vtkTypeBool);
+  vtkBooleanMacro(TimeStages, vtkTypeBool);
+  ///@}
+
+  /**
+   * Emission of a prop, as linear RGB radiance (0 or absent: not emissive). Stored in the
+   * prop's property keys, read by this pass. Negative or non-finite values are rejected.
+   */
+  static vtkInformationDoubleVectorKey* EMISSION();
+  static void SetPropEmission(vtkProp* prop, double r, double g, double b);
+
+  /**
+   * Mark a prop as dynamic (revoxelized alone whenever it changes) or static.
+   */
+  static vtkInformationIntegerKey* DYNAMIC();
+  static void SetPropDynamic(vtkProp* prop, bool dynamic);
+
+  enum Stages
+  {
+    STAGE_CLEAR = 0,
+    STAGE_VOXELIZE_STATIC,
+    STAGE_VOXELIZE_DYNAMIC,
+    STAGE_RESOLVE,
+    STAGE_DEBUG_VIEW,
+    NUMBER_OF_STAGES
+  };
+
+  /**
+   * Whether a stage ran in the last frame, its GPU time in milliseconds (0 unless
+   * TimeStages is on) and its name.
+   */
+  bool GetStageRan(int stage) const;
+  double GetStageTime(int stage) const;
+  static const char* GetStageName(int stage);
+
+  /**
+   * True when the last frame ran the GI stages (false when GI was off, could not run on this
+   * context, or the scene had nothing to voxelize).
+   */
+  vtkGetMacro(GIActive, bool);
+
+  /**
+   * The voxel grid of the last frame: voxels per axis (0 before the first voxelization),
+   * world position of its minimum corner and voxel edge length.
+   */
+  int GetGridResolution() const;
+  void GetGridOrigin(double origin[3]) const;
+  double GetGridVoxelSize() const;
+
+  /**
+   * GPU memory held by the voxel volumes and buffers, in bytes.
+   */
+  unsigned long long GetVoxelMemoryBytes() const;
+
+  enum Volumes
+  {
+    VOLUME_ALBEDO = 0, ///< unsigned char RGBA, alpha 255 where occupied
+    VOLUME_NORMAL,     ///< unsigned char RGBA, normal * 127.5 + 127.5
+    VOLUME_EMISSION,   ///< float RGBA (only when the scene has emission)
+    VOLUME_COUNT,      ///< unsigned int: fragments averaged into each voxel
+    VOLUME_FLAG        ///< unsigned char: 1 where a static actor wrote the voxel
+  };
+
+  /**
+   * Copy a voxel volume of the last frame into `image` (point data "Voxels"; origin at the
+   * first voxel's centre, spacing the voxel size). Makes the last render window's context
+   * current. Returns false when there is no such volume.
+   */
+  bool GetVoxelVolume(int volume, vtkImageData* image);
+
+  // Shader injection into the mappers while voxelizing (see vtkOpenGLRenderPass).
+  bool PreReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
+    vtkOpenGLVertexArrayObject* VAO = nullptr) override;
+  vtkMTimeType GetShaderStageMTime() override;
+
+protected:
+  vtkVoxelGIPass();
+  ~vtkVoxelGIPass() override;
+
+  /// Render VTK's own image.
+  void RenderDelegate(const vtkRenderState* s);
+  /// Scan the scene and bring the voxel volumes up to date; false if GI cannot run.
+  bool UpdateVoxels(const vtkRenderState* s);
+  /// Render the scanned actors into the accumulators (static ones only when `full`).
+  void VoxelizeActors(vtkRenderer* renderer, bool full);
+  /// OpenGL 4.3 available? Reports a missing capability once.
+  bool CheckContext(vtkRenderWindow* renWin);
+
+  vtkRenderPass* DelegatePass = nullptr;
+  vtkTypeBool Enabled = 1;
+  int VoxelResolution = 128;
+  double GridPadding = 0.05;
+  int DebugView = DEBUG_VIEW_NONE;
+  vtkTypeBool AutoDynamic = 1;
+  vtkTypeBool TimeStages = 0;
+  bool GIActive = false;
+
+private:
+  vtkVoxelGIPass(const vtkVoxelGIPass&) = delete;
+  void operator=(const vtkVoxelGIPass&) = delete;
+
+  struct Internals;
+  std::unique_ptr<Internals> Internal;
+};
+
+#endif

@@ -1,0 +1,32 @@
+// Voxel albedo debug view of the Cornell box: the walls' red/green/white, the blocks and the
+// ceiling panel must appear as voxels where VTK draws them.
+#include "VoxelGITestUtilities.h"
+#include "vtkVoxelGIPass.h"
+#include "vtkVoxelGIScenes.h"
+
+#include "vtkNew.h"
+#include "vtkRegressionTestImage.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+
+int TestVoxelAlbedoCornell(int argc, char* argv[])
+{
+  vtkNew<vtkRenderer> renderer;
+  vtkVoxelGIScenes::AddCornellBox(renderer);
+  vtkNew<vtkRenderWindow> window;
+  window->SetSize(300, 300);
+  window->AddRenderer(renderer);
+
+  vtkNew<vtkVoxelGIPass> gi;
+  gi->SetVoxelResolution(64);
+  gi->SetDebugViewToVoxelAlbedo();
+  renderer->SetPass(gi);
+  window->Render();
+  if (!gi->GetGIActive())
+  {
+    std::cerr << "GI did not run on the Cornell box." << std::endl;
+    return EXIT_FAILURE;
+  }
+
+  return voxelgi_test::ImageMatches(vtkRegressionTestImage(window));
+}
