@@ -7,6 +7,8 @@
 // ch. 42): every edge moves out by the pixel's half diagonal along its normal. Where the
 // dilated vertices run away (very acute angles) the triangle's bounding rectangle is emitted
 // instead. The fragment stage clips against the exact triangle, so both shapes are correct.
+// Where the GPU rasterizes conservatively itself (GL_NV_conservative_raster), the triangle is
+// emitted as it is.
 //
 // VTK fills the //VTK:: tags below with its varyings written as `xVSOutput[i]`; the pass
 // rewrites those into barycentric blends so attributes stay exact on the dilated shape.
@@ -26,6 +28,7 @@ layout(triangles) in;
 layout(triangle_strip, max_vertices = 4) out;
 
 uniform int voxelResolution;
+uniform int voxelDilate;       // 0 when the hardware rasterizes conservatively
 
 flat out int voxelAxis;        // 0: x, 1: y, 2: z dominant
 flat out vec4 voxelBox;        // triangle bounds in the projected plane (voxel units)
@@ -110,12 +113,13 @@ void main()
 
   vec2 dilated[3];
   bool useTriangle = true;
+  bool dilate = voxelDilate != 0;
   for (int k = 0; k < 3; ++k)
   {
     vec3 h = cross(lines[(k + 2) % 3], lines[k]);
-    dilated[k] = h.xy / h.z;
-    if (!(abs(h.z) > 1e-12) || any(lessThan(dilated[k], bmin - 1.0)) ||
-      any(greaterThan(dilated[k], bmax + 1.0)))
+    dilated[k] = dilate ? h.xy / h.z : v[k];
+    if (dilate && (!(abs(h.z) > 1e-12) || any(lessThan(dilated[k], bmin - 1.0)) ||
+      any(greaterThan(dilated[k], bmax + 1.0))))
     {
       useTriangle = false;
     }

@@ -5,6 +5,7 @@
 #include "vtkTextureUnitManager.h"
 #include "vtk_glew.h"
 
+#include <cstring>
 #include <vector>
 
 namespace voxelgi
@@ -319,6 +320,22 @@ void StageTimer::Release()
     this->Query = 0;
   }
   this->Pending = false;
+}
+
+//------------------------------------------------------------------------------
+bool HasExtension(const char* name)
+{
+  GLint count = 0;
+  glGetIntegerv(GL_NUM_EXTENSIONS, &count);
+  for (GLint i = 0; i < count; ++i)
+  {
+    const char* extension = reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, static_cast<GLuint>(i)));
+    if (extension && std::strcmp(extension, name) == 0)
+    {
+      return true;
+    }
+  }
+  return false;
 }
 
 //------------------------------------------------------------------------------

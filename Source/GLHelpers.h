@@ -131,6 +131,9 @@ private:
   bool Pending = false;
 };
 
+/// Whether the current context lists `name` among its extensions.
+bool HasExtension(const char* name);
+
 /// Drain the GL error queue; returns the number of errors that were pending.
 int ClearErrors();
 

@@ -184,6 +184,7 @@ void Voxelizer::SetShaderParameters(
 {
   program->SetUniformi("voxelResolution", this->Resolution);
   program->SetUniformi("voxelStaticPass", staticPass ? 1 : 0);
+  program->SetUniformi("voxelDilate", this->HardwareConservative ? 0 : 1);
   program->SetUniformi("voxelFlag", static_cast<int>(FlagUnit));
   const float e[3] = { static_cast<float>(emission[0]), static_cast<float>(emission[1]),
     static_cast<float>(emission[2]) };

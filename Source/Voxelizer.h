@@ -53,6 +53,10 @@ public:
   void PostReplaceShaders(std::string& geometry, std::string& fragment) const;
   void SetShaderParameters(vtkShaderProgram* program, bool staticPass, const double emission[3]) const;
 
+  /// Use GL_NV_conservative_raster (when the context has it) instead of dilating triangles.
+  void SetHardwareConservative(bool on) { this->HardwareConservative = on; }
+  bool GetHardwareConservative() const { return this->HardwareConservative; }
+
   int GetResolution() const { return this->Resolution; }
   bool HasEmission() const { return this->Emission; }
   std::size_t MemoryBytes() const;
@@ -72,6 +76,7 @@ private:
 
   int Resolution = 0;
   bool Emission = false;
+  bool HardwareConservative = false;
   std::array<StorageBuffer, BaseChannels + EmissionChannels> Accumulators;
   Volume3D FlagVolume;
   ComputeProgram ClearProgram;

@@ -122,6 +122,7 @@ struct vtkVoxelGIPass::Internals
   vtkWeakPointer<vtkOpenGLRenderWindow> Window;
   bool ContextChecked = false;
   bool ContextOk = false;
+  bool HasConservativeRaster = false;
 
   void BeginStage(int stage, bool timed)
   {
@@ -243,6 +244,11 @@ double vtkVoxelGIPass::GetGridVoxelSize() const
   return this->Internal->Grid.VoxelSize;
 }
 
+bool vtkVoxelGIPass::GetUsedHardwareConservativeRaster() const
+{
+  return this->Internal->Voxels.GetHardwareConservative();
+}
+
 unsigned long long vtkVoxelGIPass::GetVoxelMemoryBytes() const
 {
   return this->Internal->Voxels.MemoryBytes();
@@ -261,6 +267,7 @@ bool vtkVoxelGIPass::CheckContext(vtkRenderWindow* renWin)
   glGetIntegerv(GL_MINOR_VERSION, &minor);
   in.ContextChecked = true;
   in.ContextOk = major > 4 || (major == 4 && minor >= 3);
+  in.HasConservativeRaster = voxelgi::HasExtension("GL_NV_conservative_raster");
   if (!in.ContextOk)
   {
     vtkErrorMacro(<< "Voxel GI needs OpenGL 4.3 (compute shaders, image load/store, shader "
@@ -468,6 +475,13 @@ bool vtkVoxelGIPass::UpdateVoxels(const vtkRenderState* s)
     full = true;
   }
 
+  const bool hardware = this->HardwareConservativeRaster && in.HasConservativeRaster;
+  if (hardware != in.Voxels.GetHardwareConservative())
+  {
+    in.Voxels.SetHardwareConservative(hardware);
+    full = true;
+  }
+
   in.Grid = grid;
   in.FittedPadding = this->GridPadding;
   in.EmissionScale = emissionScale;
@@ -537,6 +551,11 @@ void vtkVoxelGIPass::VoxelizeActors(vtkRenderer* renderer, bool full)
     ostate->vtkglDisable(GL_BLEND);
     // Depth is computed in the shader; clamping keeps the rasterizer from clipping it.
     glEnable(GL_DEPTH_CLAMP);
+    const bool hardware = in.Voxels.GetHardwareConservative();
+    if (hardware)
+    {
+      glEnable(GL_CONSERVATIVE_RASTERIZATION_NV);
+    }
 
     vtkRenderState state(renderer);
     state.SetPropArrayAndCount(all.data(), static_cast<int>(all.size()));
@@ -567,6 +586,10 @@ void vtkVoxelGIPass::VoxelizeActors(vtkRenderer* renderer, bool full)
     }
     this->PostRender(&state);
     glDisable(GL_DEPTH_CLAMP);
+    if (hardware)
+    {
+      glDisable(GL_CONSERVATIVE_RASTERIZATION_NV);
+    }
   }
   ostate->PopFramebufferBindings();
 
@@ -721,6 +744,7 @@ void vtkVoxelGIPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "GridPadding: " << this->GridPadding << "\n";
   os << indent << "DebugView: " << this->DebugView << "\n";
   os << indent << "AutoDynamic: " << this->AutoDynamic << "\n";
+  os << indent << "HardwareConservativeRaster: " << this->HardwareConservativeRaster << "\n";
   os << indent << "TimeStages: " << this->TimeStages << "\n";
   os << indent << "GIActive: " << this->GIActive << "\n";
   const Internals& in = *this->Internal;

@@ -131,6 +131,22 @@ public:
 
   ///@{
   /**
+   * Rasterize conservatively with the GPU's GL_NV_conservative_raster where the context has
+   * it; otherwise (or when off) triangles are dilated in the geometry shader. Both are
+   * conservative. Default: on.
+   */
+  vtkSetMacro(HardwareConservativeRaster, vtkTypeBool);
+  vtkGetMacro(HardwareConservativeRaster, vtkTypeBool);
+  vtkBooleanMacro(HardwareConservativeRaster, vtkTypeBool);
+  ///@}
+
+  /**
+   * Whether the last voxelization used the hardware conservative rasterizer.
+   */
+  bool GetUsedHardwareConservativeRaster() const;
+
+  ///@{
+  /**
    * Measure each stage's GPU time with timer queries (GetStageTime()). Waiting for the
    * results costs a little, hence off by default.
    */
@@ -233,6 +249,7 @@ protected:
   double GridPadding = 0.05;
   int DebugView = DEBUG_VIEW_NONE;
   vtkTypeBool AutoDynamic = 1;
+  vtkTypeBool HardwareConservativeRaster = 1;
   vtkTypeBool TimeStages = 0;
   bool GIActive = false;
 

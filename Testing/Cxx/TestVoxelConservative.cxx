@@ -109,59 +109,69 @@ int TestVoxelConservative(int, char*[])
   gi->SetGridPadding(padding);
   renderer->SetPass(gi);
   renderer->ResetCamera();
-  window->Render();
-  VOXELGI_CHECK(gi->GetGIActive(), "GI did not run");
-
-  double gridOrigin[3];
-  gi->GetGridOrigin(gridOrigin);
-  VOXELGI_CHECK(gi->GetGridResolution() == res, "resolution " << gi->GetGridResolution());
-  VOXELGI_CHECK(std::abs(gi->GetGridVoxelSize() - h) < 1e-12, "voxel size " << gi->GetGridVoxelSize());
-  VOXELGI_CHECK(std::abs(gridOrigin[0] - origin) < 1e-12, "origin " << gridOrigin[0]);
-
-  vtkNew<vtkImageData> counts;
-  VOXELGI_CHECK(gi->GetVoxelVolume(vtkVoxelGIPass::VOLUME_COUNT, counts), "no count volume");
-  vtkDataArray* occupancy = counts->GetPointData()->GetScalars();
-
-  std::vector<char> expected(static_cast<std::size_t>(res) * res * res, 0);
-  const glm::dvec3 half(0.5 * h);
-  for (const Triangle& t : triangles)
+  // Both paths when the GPU rasterizes conservatively itself; the software one always.
+  for (const bool hardware : { true, false })
   {
-    glm::ivec3 lo(res), hi(-1);
-    for (const auto& v : t)
+    gi->SetHardwareConservativeRaster(hardware);
+    window->Render();
+    VOXELGI_CHECK(gi->GetGIActive(), "GI did not run");
+    if (hardware != gi->GetUsedHardwareConservativeRaster())
     {
-      const glm::dvec3 g = (v - glm::dvec3(origin)) / h;
-      lo = glm::min(lo, glm::ivec3(glm::floor(g)) - 1);
-      hi = glm::max(hi, glm::ivec3(glm::floor(g)) + 1);
+      std::cout << "no hardware conservative rasterization on this GPU" << std::endl;
+      continue;
     }
-    lo = glm::clamp(lo, glm::ivec3(0), glm::ivec3(res - 1));
-    hi = glm::clamp(hi, glm::ivec3(0), glm::ivec3(res - 1));
-    for (int z = lo.z; z <= hi.z; ++z)
-      for (int y = lo.y; y <= hi.y; ++y)
-        for (int x = lo.x; x <= hi.x; ++x)
-        {
-          const glm::dvec3 center = glm::dvec3(origin) + (glm::dvec3(x, y, z) + 0.5) * h;
-          if (voxelgi_test::TriangleBoxOverlap(center, half, t[0], t[1], t[2]))
-          {
-            expected[x + res * (y + res * z)] = 1;
-          }
-        }
-  }
+    double gridOrigin[3];
+    gi->GetGridOrigin(gridOrigin);
+    VOXELGI_CHECK(gi->GetGridResolution() == res, "resolution " << gi->GetGridResolution());
+    VOXELGI_CHECK(std::abs(gi->GetGridVoxelSize() - h) < 1e-12, "voxel size " << gi->GetGridVoxelSize());
+    VOXELGI_CHECK(std::abs(gridOrigin[0] - origin) < 1e-12, "origin " << gridOrigin[0]);
 
-  long touched = 0, missed = 0, occupied = 0, extra = 0;
-  for (std::size_t i = 0; i < expected.size(); ++i)
-  {
-    const bool gpu = occupancy->GetTuple1(static_cast<vtkIdType>(i)) > 0;
-    touched += expected[i];
-    occupied += gpu;
-    missed += (expected[i] && !gpu);
-    extra += (!expected[i] && gpu);
+    vtkNew<vtkImageData> counts;
+    VOXELGI_CHECK(gi->GetVoxelVolume(vtkVoxelGIPass::VOLUME_COUNT, counts), "no count volume");
+    vtkDataArray* occupancy = counts->GetPointData()->GetScalars();
+
+    std::vector<char> expected(static_cast<std::size_t>(res) * res * res, 0);
+    const glm::dvec3 half(0.5 * h);
+    for (const Triangle& t : triangles)
+    {
+      glm::ivec3 lo(res), hi(-1);
+      for (const auto& v : t)
+      {
+        const glm::dvec3 g = (v - glm::dvec3(origin)) / h;
+        lo = glm::min(lo, glm::ivec3(glm::floor(g)) - 1);
+        hi = glm::max(hi, glm::ivec3(glm::floor(g)) + 1);
+      }
+      lo = glm::clamp(lo, glm::ivec3(0), glm::ivec3(res - 1));
+      hi = glm::clamp(hi, glm::ivec3(0), glm::ivec3(res - 1));
+      for (int z = lo.z; z <= hi.z; ++z)
+        for (int y = lo.y; y <= hi.y; ++y)
+          for (int x = lo.x; x <= hi.x; ++x)
+          {
+            const glm::dvec3 center = glm::dvec3(origin) + (glm::dvec3(x, y, z) + 0.5) * h;
+            if (voxelgi_test::TriangleBoxOverlap(center, half, t[0], t[1], t[2]))
+            {
+              expected[x + res * (y + res * z)] = 1;
+            }
+          }
+    }
+
+    long touched = 0, missed = 0, occupied = 0, extra = 0;
+    for (std::size_t i = 0; i < expected.size(); ++i)
+    {
+      const bool gpu = occupancy->GetTuple1(static_cast<vtkIdType>(i)) > 0;
+      touched += expected[i];
+      occupied += gpu;
+      missed += (expected[i] && !gpu);
+      extra += (!expected[i] && gpu);
+    }
+    std::cout << (hardware ? "hardware" : "software") << " conservative rasterization, "
+              << triangles.size() << " triangles: " << touched << " voxels touched, " << occupied
+              << " occupied, " << missed << " missed, false-positive rate "
+              << (occupied ? 100.0 * extra / occupied : 0.0) << "%" << std::endl;
+    VOXELGI_CHECK(touched > 1000, "the triangles touch too few voxels to test anything");
+    VOXELGI_CHECK(missed == 0, missed << " touched voxels are missing");
+    // Conservative, but not wildly so.
+    VOXELGI_CHECK(extra < occupied / 2, "false positives " << extra << " of " << occupied);
   }
-  std::cout << triangles.size() << " triangles: " << touched << " voxels touched, " << occupied
-            << " occupied, " << missed << " missed, false-positive rate "
-            << (occupied ? 100.0 * extra / occupied : 0.0) << "%" << std::endl;
-  VOXELGI_CHECK(touched > 1000, "the triangles touch too few voxels to test anything");
-  VOXELGI_CHECK(missed == 0, missed << " touched voxels are missing");
-  // Conservative, but not wildly so.
-  VOXELGI_CHECK(extra < occupied / 2, "false positives " << extra << " of " << occupied);
   return EXIT_SUCCESS;
 }
