@@ -1,16 +1,18 @@
 //VTK::System::Dec
 // Shows the voxel volumes as the image: each pixel marches its camera ray through the grid
-// (Amanatides-Woo traversal) and shows the first occupied voxel's albedo, normal or emission,
+// (Amanatides-Woo traversal) and shows the first occupied voxel's albedo, normal, emission or
+// radiance,
 // shaded a little by the voxel face the ray entered through so equal colours stay readable.
 in vec2 texCoord;
 
 uniform sampler3D voxelAlbedo;
 uniform sampler3D voxelNormal;
 uniform sampler3D voxelEmission;
+uniform sampler3D voxelRadiance;
 uniform int hasEmission;
 uniform mat4 voxelFromNDC;   // normalized device coordinates -> voxel coordinates
 uniform int voxelResolution;
-uniform int debugView;       // 1: albedo, 2: normal, 3: emission
+uniform int debugView;       // 1: albedo, 2: normal, 3: emission, 4: radiance
 uniform vec3 backgroundColor;
 
 //VTK::Output::Dec
@@ -56,7 +58,8 @@ void main()
         }
         else
         {
-          vec3 e = hasEmission != 0 ? texelFetch(voxelEmission, cell, 0).rgb : vec3(0.0);
+          vec3 e = debugView == 4 ? texelFetch(voxelRadiance, cell, 0).rgb
+                                  : (hasEmission != 0 ? texelFetch(voxelEmission, cell, 0).rgb : vec3(0.0));
           color = e / (1.0 + e);
         }
         color *= faceShade[face];

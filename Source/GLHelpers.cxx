@@ -5,6 +5,7 @@
 #include "vtkTextureUnitManager.h"
 #include "vtk_glew.h"
 
+#include <algorithm>
 #include <cstring>
 #include <vector>
 
@@ -73,6 +74,20 @@ void ComputeProgram::SetFloat(const char* name, float value)
   glUniform1f(glGetUniformLocation(this->Handle, name), value);
 }
 
+void ComputeProgram::SetVec3Array(const char* name, int count, const float* values)
+{
+  glUniform3fv(glGetUniformLocation(this->Handle, name), count, values);
+}
+
+void ComputeProgram::BindUniformBlock(const char* block, unsigned int index)
+{
+  const GLuint blockIndex = glGetUniformBlockIndex(this->Handle, block);
+  if (blockIndex != GL_INVALID_INDEX)
+  {
+    glUniformBlockBinding(this->Handle, blockIndex, index);
+  }
+}
+
 void ComputeProgram::DispatchCube(int n, int localSize)
 {
   const GLuint groups = static_cast<GLuint>((n + localSize - 1) / localSize);
@@ -119,7 +134,8 @@ Volume3D::~Volume3D()
 
 bool Volume3D::Allocate(unsigned int internalFormat, int resolution, int levels)
 {
-  if (this->Handle && this->Format == internalFormat && this->Size == resolution)
+  if (this->Handle && this->Format == internalFormat && this->Size == resolution &&
+    this->LevelCount == levels)
   {
     return true;
   }
@@ -129,7 +145,9 @@ bool Volume3D::Allocate(unsigned int internalFormat, int resolution, int levels)
   glBindTexture(GL_TEXTURE_3D, this->Handle);
   glTexStorage3D(GL_TEXTURE_3D, levels, internalFormat, resolution, resolution, resolution);
   const bool integer = internalFormat == GL_R8UI || internalFormat == GL_R32UI;
-  glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, integer ? GL_NEAREST : GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER,
+    integer ? GL_NEAREST : (levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR));
+  glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAX_LEVEL, levels - 1);
   glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, integer ? GL_NEAREST : GL_LINEAR);
   glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
   glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
@@ -142,14 +160,26 @@ bool Volume3D::Allocate(unsigned int internalFormat, int resolution, int levels)
   }
   this->Format = internalFormat;
   this->Size = resolution;
-  const std::size_t n = static_cast<std::size_t>(resolution);
-  this->ByteSize = n * n * n * BytesPerTexel(internalFormat);
+  this->LevelCount = levels;
+  this->ByteSize = 0;
+  for (int level = 0; level < levels; ++level)
+  {
+    const std::size_t n = static_cast<std::size_t>(std::max(resolution >> level, 1));
+    this->ByteSize += n * n * n * BytesPerTexel(internalFormat);
+  }
   return true;
 }
 
-void Volume3D::BindImage(unsigned int unit, unsigned int access) const
+void Volume3D::BindImage(unsigned int unit, unsigned int access, int level) const
 {
-  glBindImageTexture(unit, this->Handle, 0, GL_TRUE, 0, access, this->Format);
+  glBindImageTexture(unit, this->Handle, level, GL_TRUE, 0, access, this->Format);
+}
+
+void Volume3D::GenerateMipmaps() const
+{
+  glBindTexture(GL_TEXTURE_3D, this->Handle);
+  glGenerateMipmap(GL_TEXTURE_3D);
+  glBindTexture(GL_TEXTURE_3D, 0);
 }
 
 int Volume3D::BindSampler(vtkOpenGLRenderWindow* renWin) const
@@ -190,7 +220,27 @@ void Volume3D::Release()
   }
   this->Format = 0;
   this->Size = 0;
+  this->LevelCount = 0;
   this->ByteSize = 0;
+}
+
+//------------------------------------------------------------------------------
+SamplerBindings::~SamplerBindings()
+{
+  for (int i = this->Count - 1; i >= 0; --i)
+  {
+    Volume3D::UnbindSampler(this->Window, this->Units[i]);
+  }
+}
+
+int SamplerBindings::Add(const Volume3D& volume)
+{
+  const int unit = volume.BindSampler(this->Window);
+  if (unit >= 0 && this->Count < 16)
+  {
+    this->Units[this->Count++] = unit;
+  }
+  return unit;
 }
 
 //------------------------------------------------------------------------------
@@ -223,6 +273,18 @@ bool StorageBuffer::Allocate(std::size_t bytes)
 void StorageBuffer::Bind(unsigned int index) const
 {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, index, this->Handle);
+}
+
+void StorageBuffer::BindUniform(unsigned int index) const
+{
+  glBindBufferBase(GL_UNIFORM_BUFFER, index, this->Handle);
+}
+
+void StorageBuffer::Upload(const void* data, std::size_t bytes) const
+{
+  glBindBuffer(GL_UNIFORM_BUFFER, this->Handle);
+  glBufferSubData(GL_UNIFORM_BUFFER, 0, static_cast<GLsizeiptr>(bytes), data);
+  glBindBuffer(GL_UNIFORM_BUFFER, 0);
 }
 
 void StorageBuffer::Read(std::size_t offset, std::size_t bytes, void* data) const

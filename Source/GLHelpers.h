@@ -34,6 +34,9 @@ public:
   void Use(vtkOpenGLRenderWindow* renWin);
   void SetInt(const char* name, int value);
   void SetFloat(const char* name, float value);
+  void SetVec3Array(const char* name, int count, const float* values);
+  /// Connect the program's uniform block `block` to uniform buffer binding `index`.
+  void BindUniformBlock(const char* block, unsigned int index);
   /// Dispatch enough groups of `localSize`^3 to cover `n`^3 invocations, then unbind.
   void DispatchCube(int n, int localSize);
   void Release();
@@ -54,7 +57,10 @@ public:
   /// (Re)allocate `resolution`^3 texels of `internalFormat` with `levels` mip levels.
   bool Allocate(unsigned int internalFormat, int resolution, int levels = 1);
   bool IsAllocated() const { return this->Handle != 0; }
-  void BindImage(unsigned int unit, unsigned int access) const;
+  int Levels() const { return this->LevelCount; }
+  void BindImage(unsigned int unit, unsigned int access, int level = 0) const;
+  /// Box-filter the mip chain from level 0.
+  void GenerateMipmaps() const;
   /// Bind for sampling on a unit taken from the window's texture unit manager.
   int BindSampler(vtkOpenGLRenderWindow* renWin) const;
   static void UnbindSampler(vtkOpenGLRenderWindow* renWin, int unit);
@@ -68,10 +74,35 @@ private:
   unsigned int Handle = 0;
   unsigned int Format = 0;
   int Size = 0;
+  int LevelCount = 0;
   std::size_t ByteSize = 0;
 };
 
-/// A shader storage buffer.
+/**
+ * Sampler bindings for one draw or dispatch: each Add() takes a texture unit from the
+ * window's texture unit manager (so VTK's own textures are never disturbed), binds the
+ * volume there and returns the unit; the destructor gives the units back.
+ */
+class SamplerBindings
+{
+public:
+  explicit SamplerBindings(vtkOpenGLRenderWindow* renWin)
+    : Window(renWin)
+  {
+  }
+  ~SamplerBindings();
+  SamplerBindings(const SamplerBindings&) = delete;
+  SamplerBindings& operator=(const SamplerBindings&) = delete;
+
+  int Add(const Volume3D& volume);
+
+private:
+  vtkOpenGLRenderWindow* Window;
+  int Units[16];
+  int Count = 0;
+};
+
+/// A buffer object, bound as shader storage or uniform buffer.
 class StorageBuffer
 {
 public:
@@ -83,6 +114,8 @@ public:
   bool Allocate(std::size_t bytes);
   bool IsAllocated() const { return this->Handle != 0; }
   void Bind(unsigned int index) const;
+  void BindUniform(unsigned int index) const;
+  void Upload(const void* data, std::size_t bytes) const;
   void Read(std::size_t offset, std::size_t bytes, void* data) const;
   std::size_t Bytes() const { return this->ByteSize; }
   void Release();

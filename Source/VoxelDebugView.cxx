@@ -1,12 +1,11 @@
 #include "VoxelDebugView.h"
 
+#include "GridView.h"
 #include "VoxelGIShaders.h"
 #include "VoxelGrid.h"
+#include "GLHelpers.h"
 #include "Voxelizer.h"
 
-#include "vtkCamera.h"
-#include "vtkMatrix4x4.h"
-#include "vtkNew.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderUtilities.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -22,8 +21,8 @@ namespace voxelgi
 VoxelDebugView::VoxelDebugView() = default;
 VoxelDebugView::~VoxelDebugView() = default;
 
-void VoxelDebugView::Render(
-  vtkRenderer* renderer, const VoxelGrid& grid, const Voxelizer& voxels, int view)
+void VoxelDebugView::Render(vtkRenderer* renderer, const VoxelGrid& grid, const Voxelizer& voxels,
+  const Volume3D& radiance, int view)
 {
   auto* renWin = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
   if (!this->Quad)
@@ -44,40 +43,17 @@ void VoxelDebugView::Render(
 
   int width = 0, height = 0, x = 0, y = 0;
   renderer->GetTiledSizeAndOrigin(&width, &height, &x, &y);
-  const double aspect = height > 0 ? static_cast<double>(width) / height : 1.0;
-
-  // NDC -> voxel coordinates, composed in double so that the large translations of a
-  // far-from-origin scene cancel before anything is rounded to float.
-  vtkNew<vtkMatrix4x4> ndcToWorld;
-  ndcToWorld->DeepCopy(
-    renderer->GetActiveCamera()->GetCompositeProjectionTransformMatrix(aspect, -1, 1));
-  ndcToWorld->Invert();
-  vtkNew<vtkMatrix4x4> worldToVoxel;
-  for (int a = 0; a < 3; ++a)
-  {
-    worldToVoxel->SetElement(a, a, 1.0 / grid.VoxelSize);
-    worldToVoxel->SetElement(a, 3, -grid.Origin[a] / grid.VoxelSize);
-  }
-  vtkNew<vtkMatrix4x4> ndcToVoxel;
-  vtkMatrix4x4::Multiply4x4(worldToVoxel, ndcToWorld, ndcToVoxel);
   float columnMajor[16];
-  for (int r = 0; r < 4; ++r)
-  {
-    for (int c = 0; c < 4; ++c)
-    {
-      columnMajor[c * 4 + r] = static_cast<float>(ndcToVoxel->GetElement(r, c));
-    }
-  }
+  GridFromNDC(renderer, grid, columnMajor);
 
-  const int albedoUnit = voxels.AlbedoVolume.BindSampler(renWin);
-  const int normalUnit = voxels.NormalVolume.BindSampler(renWin);
-  // Without emission the sampler still needs a 3D texture of its type behind it.
-  const Volume3D& emission = voxels.HasEmission() ? voxels.EmissionVolume : voxels.AlbedoVolume;
-  const int emissionUnit = emission.BindSampler(renWin);
-
-  program->SetUniformi("voxelAlbedo", albedoUnit);
-  program->SetUniformi("voxelNormal", normalUnit);
-  program->SetUniformi("voxelEmission", emissionUnit);
+  SamplerBindings samplers(renWin);
+  program->SetUniformi("voxelAlbedo", samplers.Add(voxels.AlbedoVolume));
+  program->SetUniformi("voxelNormal", samplers.Add(voxels.NormalVolume));
+  // Volumes a scene lacks still need a 3D texture of the sampler's type behind them.
+  program->SetUniformi("voxelEmission",
+    samplers.Add(voxels.HasEmission() ? voxels.EmissionVolume : voxels.AlbedoVolume));
+  program->SetUniformi("voxelRadiance",
+    samplers.Add(radiance.IsAllocated() ? radiance : voxels.AlbedoVolume));
   program->SetUniformi("hasEmission", voxels.HasEmission() ? 1 : 0);
   program->SetUniformMatrix4x4("voxelFromNDC", columnMajor);
   program->SetUniformi("voxelResolution", grid.Resolution);
@@ -95,10 +71,6 @@ void VoxelDebugView::Render(
   ostate->vtkglDisable(GL_DEPTH_TEST);
   ostate->vtkglDisable(GL_BLEND);
   this->Quad->Render();
-
-  Volume3D::UnbindSampler(renWin, emissionUnit);
-  Volume3D::UnbindSampler(renWin, normalUnit);
-  Volume3D::UnbindSampler(renWin, albedoUnit);
 }
 
 void VoxelDebugView::ReleaseGraphicsResources(vtkWindow* window)

@@ -15,6 +15,7 @@ class vtkWindow;
 namespace voxelgi
 {
 class Voxelizer;
+class Volume3D;
 struct VoxelGrid;
 
 class VoxelDebugView
@@ -24,8 +25,9 @@ public:
   ~VoxelDebugView();
 
   /// Draw over the renderer's viewport in the currently bound framebuffer.
-  /// `view`: 1 albedo, 2 normal, 3 emission.
-  void Render(vtkRenderer* renderer, const VoxelGrid& grid, const Voxelizer& voxels, int view);
+  /// `view`: 1 albedo, 2 normal, 3 emission, 4 radiance.
+  void Render(vtkRenderer* renderer, const VoxelGrid& grid, const Voxelizer& voxels,
+    const Volume3D& radiance, int view);
   void ReleaseGraphicsResources(vtkWindow* window);
 
 private:

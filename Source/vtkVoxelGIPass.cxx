@@ -1,12 +1,18 @@
 #include "vtkVoxelGIPass.h"
 
+#include "ConeTracer.h"
+#include "GBuffer.h"
 #include "GLHelpers.h"
 #include "VoxelDebugView.h"
 #include "VoxelGrid.h"
+#include "VoxelLighting.h"
+#include "VoxelLights.h"
+#include "VoxelMipmap.h"
 #include "Voxelizer.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkCameraPass.h"
 #include "vtkDataObject.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
@@ -16,15 +22,18 @@
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLPolyDataMapper.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtkPointData.h"
 #include "vtkProperty.h"
 #include "vtkPropCollection.h"
+#include "vtkRenderPassCollection.h"
 #include "vtkRenderState.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkRenderer.h"
+#include "vtkSequencePass.h"
 #include "vtkTypeUInt32Array.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkFloatArray.h"
@@ -105,8 +114,31 @@ vtkMTimeType ActorSignature(vtkActor* actor)
 
 struct vtkVoxelGIPass::Internals
 {
+  // Which shader code the mappers get while this pass is in their render-pass keys.
+  enum class Injection
+  {
+    Voxelize,
+    GBuffer
+  };
+
   voxelgi::Voxelizer Voxels;
+  voxelgi::VoxelLights Lights;
+  voxelgi::VoxelLighting Lighting;
+  voxelgi::VoxelMipmap Mipmap;
+  voxelgi::ConeSettings Cones;
+  voxelgi::GBuffer Frame;
+  voxelgi::ConeTracer Tracer;
   voxelgi::VoxelDebugView Debug;
+  // Camera + lights + opaque steps of a vtkRenderStepsPass delegate, into the G-buffer.
+  vtkNew<vtkCameraPass> OpaqueCamera;
+  vtkNew<vtkSequencePass> OpaqueSequence;
+  vtkNew<vtkRenderPassCollection> OpaquePasses;
+  Injection Mode = Injection::Voxelize;
+  bool LitScene = true;
+  std::vector<double> RadianceSettings; // what the radiance was last computed with
+  bool RadianceValid = false;
+  bool Traced = false;
+  bool WarnedLights = false;
   voxelgi::EmptyFramebuffer Framebuffer;
   voxelgi::VoxelGrid Grid;
   std::array<voxelgi::StageTimer, NUMBER_OF_STAGES> Timers;
@@ -123,6 +155,15 @@ struct vtkVoxelGIPass::Internals
   bool ContextChecked = false;
   bool ContextOk = false;
   bool HasConservativeRaster = false;
+
+  void SetMode(Injection mode)
+  {
+    if (mode != this->Mode)
+    {
+      this->Mode = mode;
+      this->ShaderStageTime.Modified(); // mappers rebuild their shaders for the other mode
+    }
+  }
 
   void BeginStage(int stage, bool timed)
   {
@@ -147,6 +188,8 @@ vtkVoxelGIPass::vtkVoxelGIPass()
 {
   vtkNew<vtkRenderStepsPass> steps;
   this->SetDelegatePass(steps);
+  this->Internal->OpaqueSequence->SetPasses(this->Internal->OpaquePasses);
+  this->Internal->OpaqueCamera->SetDelegatePass(this->Internal->OpaqueSequence);
 }
 
 vtkVoxelGIPass::~vtkVoxelGIPass()
@@ -222,7 +265,7 @@ double vtkVoxelGIPass::GetStageTime(int stage) const
 const char* vtkVoxelGIPass::GetStageName(int stage)
 {
   static const char* names[NUMBER_OF_STAGES] = { "Clear", "VoxelizeStatic", "VoxelizeDynamic",
-    "Resolve", "DebugView" };
+    "Resolve", "LightVoxels", "Mipmap", "Bounce", "GBuffer", "ConeTrace", "DebugView" };
   return (stage >= 0 && stage < NUMBER_OF_STAGES) ? names[stage] : "Unknown";
 }
 
@@ -251,7 +294,8 @@ bool vtkVoxelGIPass::GetUsedHardwareConservativeRaster() const
 
 unsigned long long vtkVoxelGIPass::GetVoxelMemoryBytes() const
 {
-  return this->Internal->Voxels.MemoryBytes();
+  const Internals& in = *this->Internal;
+  return in.Voxels.MemoryBytes() + in.Lighting.MemoryBytes() + in.Mipmap.MemoryBytes();
 }
 
 //------------------------------------------------------------------------------
@@ -286,21 +330,32 @@ void vtkVoxelGIPass::Render(const vtkRenderState* s)
   in.Times.fill(0.0);
   this->GIActive = false;
 
+  in.Traced = false;
   vtkRenderer* renderer = s->GetRenderer();
   auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  bool voxelsChanged = false;
   // Hardware picking renders through the pass too: it must see VTK's plain render steps.
   if (this->Enabled && renWin && !renderer->GetSelector() && this->CheckContext(renWin))
   {
     in.Window = renWin;
-    this->GIActive = this->UpdateVoxels(s);
+    this->GIActive = this->UpdateVoxels(s, voxelsChanged) && this->UpdateRadiance(renderer, voxelsChanged);
   }
 
-  this->RenderDelegate(s);
+  const bool voxelView = this->DebugView >= DEBUG_VIEW_VOXEL_ALBEDO &&
+    this->DebugView <= DEBUG_VIEW_VOXEL_RADIANCE;
+  if (!this->GIActive || voxelView)
+  {
+    this->RenderDelegate(s);
+  }
+  else
+  {
+    this->RenderGI(s);
+  }
 
-  if (this->GIActive && this->DebugView != DEBUG_VIEW_NONE)
+  if (this->GIActive && voxelView)
   {
     in.BeginStage(STAGE_DEBUG_VIEW, this->TimeStages);
-    in.Debug.Render(renderer, in.Grid, in.Voxels, this->DebugView);
+    in.Debug.Render(renderer, in.Grid, in.Voxels, in.Lighting.Radiance, this->DebugView);
     in.EndStage(STAGE_DEBUG_VIEW, this->TimeStages);
   }
 
@@ -334,7 +389,7 @@ void vtkVoxelGIPass::RenderDelegate(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
-bool vtkVoxelGIPass::UpdateVoxels(const vtkRenderState* s)
+bool vtkVoxelGIPass::UpdateVoxels(const vtkRenderState* s, bool& changed)
 {
   Internals& in = *this->Internal;
   vtkRenderer* renderer = s->GetRenderer();
@@ -487,12 +542,166 @@ bool vtkVoxelGIPass::UpdateVoxels(const vtkRenderState* s)
   in.EmissionScale = emissionScale;
   in.Records = records;
 
-  if (full || dynamicChanged)
+  changed = full || dynamicChanged;
+  if (changed)
   {
     this->VoxelizeActors(renderer, full);
     in.Voxelized = true;
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkVoxelGIPass::UpdateRadiance(vtkRenderer* renderer, bool voxelsChanged)
+{
+  Internals& in = *this->Internal;
+  vtkOpenGLRenderWindow* renWin = in.Window;
+  const bool timed = this->TimeStages != 0;
+
+  // Headlights and camera lights follow the camera: place them before reading them.
+  renderer->UpdateLightsGeometryToFollowCamera();
+  int dropped = 0;
+  const bool lightsChanged = in.Lights.Gather(renderer, in.Grid, dropped);
+  if (dropped > 0 && !in.WarnedLights)
+  {
+    vtkWarningMacro(<< "Voxel GI uses the first " << voxelgi::VoxelLights::MaxLights
+                    << " lights; " << dropped << " more are left out of the GI.");
+    in.WarnedLights = true;
+  }
+  in.LitScene = in.Lights.GetCount() > 0;
+  in.Lights.Bind();
+
+  const double maxDistance = this->MaxTraceDistance * in.Grid.Resolution;
+  in.Cones.Set(this->DiffuseConeCount, this->DiffuseConeAperture, this->ConeStepFactor, maxDistance);
+  const std::vector<double> settings{ static_cast<double>(this->VoxelShadows),
+    static_cast<double>(this->Bounces), static_cast<double>(this->AnisotropicMipmaps),
+    static_cast<double>(this->DiffuseConeCount), this->DiffuseConeAperture, this->ConeStepFactor,
+    maxDistance };
+  if (!voxelsChanged && !lightsChanged && in.RadianceValid && settings == in.RadianceSettings)
+  {
+    return true;
+  }
+
+  std::string error;
+  const int res = in.Grid.Resolution;
+  const bool anisotropic = this->AnisotropicMipmaps != 0;
+  if (!in.Lighting.Prepare(res, !anisotropic, this->Bounces > 0, error) ||
+    !in.Mipmap.Prepare(res, anisotropic, error))
+  {
+    vtkErrorMacro(<< "Voxel GI disabled for this frame: " << error << ".");
+    in.RadianceValid = false;
+    return false;
+  }
+  in.BeginStage(STAGE_LIGHT, timed);
+  in.Lighting.Inject(renWin, in.Voxels, this->VoxelShadows != 0);
+  in.EndStage(STAGE_LIGHT, timed);
+  in.BeginStage(STAGE_MIPMAP, timed);
+  in.Mipmap.Build(renWin, in.Lighting.Radiance);
+  in.EndStage(STAGE_MIPMAP, timed);
+  if (this->Bounces > 0)
+  {
+    // Bounce and mip timings are summed into one query each would nest; time them together.
+    in.BeginStage(STAGE_BOUNCE, timed);
+    for (int bounce = 0; bounce < this->Bounces; ++bounce)
+    {
+      in.Lighting.Bounce(renWin, in.Voxels, in.Mipmap, in.Cones);
+      in.Mipmap.Build(renWin, in.Lighting.Radiance);
+    }
+    in.EndStage(STAGE_BOUNCE, timed);
+  }
+  in.RadianceSettings = settings;
+  in.RadianceValid = true;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkVoxelGIPass::RenderGI(const vtkRenderState* s)
+{
+  Internals& in = *this->Internal;
+  vtkRenderer* renderer = s->GetRenderer();
+  vtkOpenGLRenderWindow* renWin = in.Window;
+  const bool timed = this->TimeStages != 0;
+  int width = 0, height = 0, x = 0, y = 0;
+  renderer->GetTiledSizeAndOrigin(&width, &height, &x, &y);
+  if (width <= 0 || height <= 0)
+  {
+    return;
+  }
+
+  // G-buffer: VTK's camera, lights and opaque steps (the whole delegate if it is not a
+  // vtkRenderStepsPass) into the pass's framebuffer.
+  in.BeginStage(STAGE_GBUFFER, timed);
+  in.Frame.Prepare(renWin, width, height);
+  vtkRenderStepsPass* steps = vtkRenderStepsPass::SafeDownCast(this->DelegatePass);
+  vtkRenderPass* opaque = this->DelegatePass;
+  if (steps)
+  {
+    vtkRenderPassCollection* passes = in.OpaquePasses;
+    passes->RemoveAllItems();
+    for (vtkRenderPass* pass : { steps->GetLightsPass(), steps->GetOpaquePass() })
+    {
+      if (pass)
+      {
+        passes->AddItem(pass);
+      }
+    }
+    opaque = in.OpaqueCamera;
+  }
+  vtkRenderState frameState(renderer);
+  frameState.SetPropArrayAndCount(s->GetPropArray(), s->GetPropArrayCount());
+  frameState.SetFrameBuffer(in.Frame.GetFramebuffer());
+  in.SetMode(Internals::Injection::GBuffer);
+  this->PreRender(&frameState);
+  in.Frame.Begin();
+  if (opaque)
+  {
+    opaque->Render(&frameState);
+    this->NumberOfRenderedProps += opaque->GetNumberOfRenderedProps();
+  }
+  in.Frame.End();
+  this->PostRender(&frameState);
+  in.EndStage(STAGE_GBUFFER, timed);
+
+  in.BeginStage(STAGE_CONE_TRACE, timed);
+  voxelgi::TraceSettings trace;
+  trace.StartOffset = static_cast<float>(this->ConeStartOffset);
+  trace.IndirectIntensity = static_cast<float>(this->IndirectIntensity);
+  trace.SpecularIntensity = static_cast<float>(this->SpecularIntensity);
+  trace.SpecularCone = this->SpecularCone != 0;
+  trace.AOStrength = static_cast<float>(this->AmbientOcclusionStrength);
+  trace.AOFalloff = static_cast<float>(this->AmbientOcclusionFalloff);
+  trace.ConeShadows = this->ConeShadows != 0;
+  trace.ShadowTanHalf =
+    static_cast<float>(std::tan(vtkMath::RadiansFromDegrees(0.5 * this->ShadowConeAperture)));
+  trace.View = this->DebugView >= DEBUG_VIEW_DIRECT ? this->DebugView - DEBUG_VIEW_DIRECT + 1 : 0;
+  in.Lights.Bind();
+  in.Tracer.Trace(renderer, in.Grid, in.Frame, in.Lighting, in.Mipmap, in.Cones, trace);
+  {
+    vtkOpenGLState* ostate = renWin->GetState();
+    vtkOpenGLState::ScopedglViewport viewport(ostate);
+    vtkOpenGLState::ScopedglScissor scissor(ostate);
+    vtkOpenGLState::ScopedglEnableDisable scissorTest(ostate, GL_SCISSOR_TEST);
+    vtkOpenGLState::ScopedglEnableDisable depthTest(ostate, GL_DEPTH_TEST);
+    ostate->vtkglEnable(GL_SCISSOR_TEST);
+    in.Tracer.Present(renWin, in.Frame, x, y, width, height);
+
+    // VTK's remaining steps draw over the composite, depth-tested against the scene.
+    if (steps)
+    {
+      ostate->vtkglEnable(GL_DEPTH_TEST);
+      for (vtkRenderPass* pass : { steps->GetTranslucentPass(), steps->GetVolumetricPass(),
+             steps->GetOverlayPass(), steps->GetPostProcessPass() })
+      {
+        if (pass)
+        {
+          pass->Render(s);
+          this->NumberOfRenderedProps += pass->GetNumberOfRenderedProps();
+        }
+      }
+    }
+  }
+  in.EndStage(STAGE_CONE_TRACE, timed);
+  in.Traced = true;
 }
 
 //------------------------------------------------------------------------------
@@ -559,6 +768,7 @@ void vtkVoxelGIPass::VoxelizeActors(vtkRenderer* renderer, bool full)
 
     vtkRenderState state(renderer);
     state.SetPropArrayAndCount(all.data(), static_cast<int>(all.size()));
+    in.SetMode(Internals::Injection::Voxelize);
     this->PreRender(&state);
     in.Voxels.BindForRendering();
     if (full)
@@ -609,21 +819,37 @@ void vtkVoxelGIPass::VoxelizeActors(vtkRenderer* renderer, bool full)
 bool vtkVoxelGIPass::PreReplaceShaderValues(std::string&, std::string& geometryShader,
   std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
 {
-  voxelgi::Voxelizer::PreReplaceShaders(geometryShader, fragmentShader);
+  if (this->Internal->Mode == Internals::Injection::Voxelize)
+  {
+    voxelgi::Voxelizer::PreReplaceShaders(geometryShader, fragmentShader);
+  }
   return true;
 }
 
 bool vtkVoxelGIPass::PostReplaceShaderValues(std::string&, std::string& geometryShader,
-  std::string& fragmentShader, vtkAbstractMapper*, vtkProp*)
+  std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop)
 {
-  this->Internal->Voxels.PostReplaceShaders(geometryShader, fragmentShader);
+  Internals& in = *this->Internal;
+  if (in.Mode == Internals::Injection::Voxelize)
+  {
+    in.Voxels.PostReplaceShaders(geometryShader, fragmentShader);
+  }
+  else if (vtkOpenGLPolyDataMapper::SafeDownCast(mapper))
+  {
+    voxelgi::GBuffer::PostReplaceShaders(fragmentShader, prop, in.LitScene);
+  }
   return true;
 }
 
-bool vtkVoxelGIPass::SetShaderParameters(
-  vtkShaderProgram* program, vtkAbstractMapper*, vtkProp* prop, vtkOpenGLVertexArrayObject*)
+bool vtkVoxelGIPass::SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper,
+  vtkProp* prop, vtkOpenGLVertexArrayObject*)
 {
-  const Internals& in = *this->Internal;
+  Internals& in = *this->Internal;
+  if (in.Mode == Internals::Injection::GBuffer)
+  {
+    in.Frame.SetShaderParameters(mapper);
+    return true;
+  }
   std::array<double, 3> emission = PropEmission(prop);
   for (double& e : emission)
   {
@@ -639,11 +865,28 @@ vtkMTimeType vtkVoxelGIPass::GetShaderStageMTime()
 }
 
 //------------------------------------------------------------------------------
+bool vtkVoxelGIPass::GetFloatImage(int image, vtkFloatArray* pixels)
+{
+  Internals& in = *this->Internal;
+  std::vector<float> rgba;
+  int w = 0, h = 0;
+  if (!pixels || !in.Window || !in.Traced || !in.Tracer.Read(in.Window, image, rgba, w, h))
+  {
+    return false;
+  }
+  pixels->SetNumberOfComponents(4);
+  pixels->SetNumberOfTuples(static_cast<vtkIdType>(w) * h);
+  std::copy(rgba.begin(), rgba.end(), pixels->GetPointer(0));
+  return true;
+}
+
+//------------------------------------------------------------------------------
 bool vtkVoxelGIPass::GetVoxelVolume(int volume, vtkImageData* image)
 {
   Internals& in = *this->Internal;
   const int res = in.Voxels.GetResolution();
-  if (!image || !in.Window || res <= 0 || (volume == VOLUME_EMISSION && !in.Voxels.HasEmission()))
+  if (!image || !in.Window || res <= 0 || (volume == VOLUME_EMISSION && !in.Voxels.HasEmission()) ||
+    (volume == VOLUME_RADIANCE && !in.Lighting.Radiance.IsAllocated()))
   {
     return false;
   }
@@ -669,11 +912,13 @@ bool vtkVoxelGIPass::GetVoxelVolume(int volume, vtkImageData* image)
       break;
     }
     case VOLUME_EMISSION:
+    case VOLUME_RADIANCE:
     {
       auto floats = vtkSmartPointer<vtkFloatArray>::New();
       floats->SetNumberOfComponents(4);
       floats->SetNumberOfTuples(n);
-      in.Voxels.EmissionVolume.Read(GL_RGBA, GL_FLOAT, floats->GetPointer(0));
+      (volume == VOLUME_EMISSION ? in.Voxels.EmissionVolume : in.Lighting.Radiance)
+        .Read(GL_RGBA, GL_FLOAT, floats->GetPointer(0));
       array = floats;
       break;
     }
@@ -710,7 +955,14 @@ void vtkVoxelGIPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   Internals& in = *this->Internal;
   in.Voxels.ReleaseGraphicsResources();
+  in.Lights.ReleaseGraphicsResources();
+  in.Lighting.ReleaseGraphicsResources();
+  in.Mipmap.ReleaseGraphicsResources();
+  in.Frame.ReleaseGraphicsResources(w);
+  in.Tracer.ReleaseGraphicsResources(w);
   in.Debug.ReleaseGraphicsResources(w);
+  in.RadianceValid = false;
+  in.Traced = false;
   in.Framebuffer.Release();
   for (auto& timer : in.Timers)
   {
@@ -746,6 +998,21 @@ void vtkVoxelGIPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "AutoDynamic: " << this->AutoDynamic << "\n";
   os << indent << "HardwareConservativeRaster: " << this->HardwareConservativeRaster << "\n";
   os << indent << "TimeStages: " << this->TimeStages << "\n";
+  os << indent << "VoxelShadows: " << this->VoxelShadows << "\n";
+  os << indent << "Bounces: " << this->Bounces << "\n";
+  os << indent << "AnisotropicMipmaps: " << this->AnisotropicMipmaps << "\n";
+  os << indent << "DiffuseConeCount: " << this->DiffuseConeCount << "\n";
+  os << indent << "DiffuseConeAperture: " << this->DiffuseConeAperture << "\n";
+  os << indent << "ConeStepFactor: " << this->ConeStepFactor << "\n";
+  os << indent << "MaxTraceDistance: " << this->MaxTraceDistance << "\n";
+  os << indent << "ConeStartOffset: " << this->ConeStartOffset << "\n";
+  os << indent << "IndirectIntensity: " << this->IndirectIntensity << "\n";
+  os << indent << "SpecularCone: " << this->SpecularCone << "\n";
+  os << indent << "SpecularIntensity: " << this->SpecularIntensity << "\n";
+  os << indent << "AmbientOcclusionStrength: " << this->AmbientOcclusionStrength << "\n";
+  os << indent << "AmbientOcclusionFalloff: " << this->AmbientOcclusionFalloff << "\n";
+  os << indent << "ConeShadows: " << this->ConeShadows << "\n";
+  os << indent << "ShadowConeAperture: " << this->ShadowConeAperture << "\n";
   os << indent << "GIActive: " << this->GIActive << "\n";
   const Internals& in = *this->Internal;
   os << indent << "Grid: " << in.Grid.Resolution << "^3 voxels of " << in.Grid.VoxelSize

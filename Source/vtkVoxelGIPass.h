@@ -11,6 +11,12 @@
  * VTK shows. Rasterization is conservative (no voxel a triangle touches is missed) and the
  * per-voxel averages are exact integer sums that do not overflow.
  *
+ * The voxels are then lit (every vtkLight kind VTK renders, with soft voxel shadows, plus
+ * emission), filtered into anisotropic mipmaps, optionally bounced, and cone-traced per
+ * pixel from a G-buffer: indirect diffuse light, a specular cone, ambient occlusion and cone
+ * soft shadows are composited with VTK's own shading of the opaque geometry. Translucent,
+ * volume and overlay props are then rendered by VTK's normal steps on top.
+ *
  * Actors are static unless marked dynamic (SetPropDynamic()) or, with AutoDynamic on,
  * once they change after having been voxelized: dynamic actors are revoxelized alone while
  * the static voxels are kept.
@@ -36,6 +42,7 @@
 
 #include <memory> // for std::unique_ptr
 
+class vtkFloatArray;
 class vtkImageData;
 class vtkInformationDoubleVectorKey;
 class vtkInformationIntegerKey;
@@ -102,21 +109,166 @@ public:
     DEBUG_VIEW_NONE = 0,
     DEBUG_VIEW_VOXEL_ALBEDO = 1,
     DEBUG_VIEW_VOXEL_NORMAL = 2,
-    DEBUG_VIEW_VOXEL_EMISSION = 3
+    DEBUG_VIEW_VOXEL_EMISSION = 3,
+    DEBUG_VIEW_VOXEL_RADIANCE = 4,
+    DEBUG_VIEW_DIRECT = 5,
+    DEBUG_VIEW_INDIRECT = 6,
+    DEBUG_VIEW_AMBIENT_OCCLUSION = 7
   };
 
   ///@{
   /**
-   * Show a voxel volume as the image instead of the shaded scene: the first voxel along
-   * each camera ray, with its albedo, normal (xyz mapped to rgb) or emission (tone mapped
-   * e / (1 + e)). Default: DEBUG_VIEW_NONE.
+   * Show an intermediate result instead of the composited image. Voxel views show the first
+   * voxel along each camera ray: its albedo, normal (xyz mapped to rgb), emission or lit
+   * radiance (tone mapped e / (1 + e)). DIRECT shows VTK's shading with the cone shadows and
+   * AO applied, INDIRECT the indirect diffuse and specular light alone, AMBIENT_OCCLUSION the
+   * cone-traced AO. Default: DEBUG_VIEW_NONE.
    */
-  vtkSetClampMacro(DebugView, int, DEBUG_VIEW_NONE, DEBUG_VIEW_VOXEL_EMISSION);
+  vtkSetClampMacro(DebugView, int, DEBUG_VIEW_NONE, DEBUG_VIEW_AMBIENT_OCCLUSION);
   vtkGetMacro(DebugView, int);
   void SetDebugViewToNone() { this->SetDebugView(DEBUG_VIEW_NONE); }
   void SetDebugViewToVoxelAlbedo() { this->SetDebugView(DEBUG_VIEW_VOXEL_ALBEDO); }
   void SetDebugViewToVoxelNormal() { this->SetDebugView(DEBUG_VIEW_VOXEL_NORMAL); }
   void SetDebugViewToVoxelEmission() { this->SetDebugView(DEBUG_VIEW_VOXEL_EMISSION); }
+  void SetDebugViewToVoxelRadiance() { this->SetDebugView(DEBUG_VIEW_VOXEL_RADIANCE); }
+  void SetDebugViewToDirect() { this->SetDebugView(DEBUG_VIEW_DIRECT); }
+  void SetDebugViewToIndirect() { this->SetDebugView(DEBUG_VIEW_INDIRECT); }
+  void SetDebugViewToAmbientOcclusion() { this->SetDebugView(DEBUG_VIEW_AMBIENT_OCCLUSION); }
+  ///@}
+
+  ///@{
+  /**
+   * Soft voxel shadows in the voxel lighting: each voxel marches toward every light through
+   * the occupancy. Off, every voxel facing a light is lit. Default: on.
+   */
+  vtkSetMacro(VoxelShadows, vtkTypeBool);
+  vtkGetMacro(VoxelShadows, vtkTypeBool);
+  vtkBooleanMacro(VoxelShadows, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
+   * Bounces of indirect diffuse light between voxels, in [0, 10]. Each one cone-traces every
+   * voxel and rebuilds the mipmaps. Default: 1.
+   */
+  vtkSetClampMacro(Bounces, int, 0, 10);
+  vtkGetMacro(Bounces, int);
+  ///@}
+
+  ///@{
+  /**
+   * Anisotropic mipmaps (six directional volumes) rather than one isotropic mip chain:
+   * less light leaking through thin walls, 6/8 more memory. Default: on.
+   */
+  vtkSetMacro(AnisotropicMipmaps, vtkTypeBool);
+  vtkGetMacro(AnisotropicMipmaps, vtkTypeBool);
+  vtkBooleanMacro(AnisotropicMipmaps, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
+   * Diffuse cones per pixel (and per voxel for bounces), in [1, 16], spread with a cosine
+   * distribution over the normal's hemisphere. Default: 6.
+   */
+  vtkSetClampMacro(DiffuseConeCount, int, 1, 16);
+  vtkGetMacro(DiffuseConeCount, int);
+  ///@}
+
+  ///@{
+  /**
+   * Full aperture of the diffuse cones in degrees, in [5, 120]. Default: 60.
+   */
+  vtkSetClampMacro(DiffuseConeAperture, double, 5.0, 120.0);
+  vtkGetMacro(DiffuseConeAperture, double);
+  ///@}
+
+  ///@{
+  /**
+   * Cone step length as a fraction of the cone's diameter, in [0.05, 2]: smaller is finer
+   * and slower (opacity is corrected for the step). Default: 0.75.
+   */
+  vtkSetClampMacro(ConeStepFactor, double, 0.05, 2.0);
+  vtkGetMacro(ConeStepFactor, double);
+  ///@}
+
+  ///@{
+  /**
+   * Longest cone, as a fraction of the voxel grid's size, in [0, 2]. 0 traces nothing.
+   * Default: 1.
+   */
+  vtkSetClampMacro(MaxTraceDistance, double, 0.0, 2.0);
+  vtkGetMacro(MaxTraceDistance, double);
+  ///@}
+
+  ///@{
+  /**
+   * How far cones start from the surface, in voxels along the normal, in [0, 8]: keeps a
+   * surface from lighting itself through its own voxels. Default: 1.5.
+   */
+  vtkSetClampMacro(ConeStartOffset, double, 0.0, 8.0);
+  vtkGetMacro(ConeStartOffset, double);
+  ///@}
+
+  ///@{
+  /**
+   * Scale of the indirect diffuse light, in [0, 10]. Default: 1.
+   */
+  vtkSetClampMacro(IndirectIntensity, double, 0.0, 10.0);
+  vtkGetMacro(IndirectIntensity, double);
+  ///@}
+
+  ///@{
+  /**
+   * One specular cone per pixel for glossy reflections, its aperture following the
+   * material's specular power (vtkProperty::SpecularPower). Default: on.
+   */
+  vtkSetMacro(SpecularCone, vtkTypeBool);
+  vtkGetMacro(SpecularCone, vtkTypeBool);
+  vtkBooleanMacro(SpecularCone, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
+   * Scale of the indirect specular light, in [0, 10]. Default: 1.
+   */
+  vtkSetClampMacro(SpecularIntensity, double, 0.0, 10.0);
+  vtkGetMacro(SpecularIntensity, double);
+  ///@}
+
+  ///@{
+  /**
+   * How much the cone-traced ambient occlusion darkens VTK's shading, in [0, 1]
+   * (0: AO off). Default: 0.5.
+   */
+  vtkSetClampMacro(AmbientOcclusionStrength, double, 0.0, 1.0);
+  vtkGetMacro(AmbientOcclusionStrength, double);
+  ///@}
+
+  ///@{
+  /**
+   * Falloff of occluders' weight with distance in the AO, per voxel, in [0, 10]: an
+   * occluder t voxels away counts 1 / (1 + falloff t). Default: 0.05.
+   */
+  vtkSetClampMacro(AmbientOcclusionFalloff, double, 0.0, 10.0);
+  vtkGetMacro(AmbientOcclusionFalloff, double);
+  ///@}
+
+  ///@{
+  /**
+   * Cone-traced soft shadows for the lights (headlights excepted): the occluded part of
+   * each light's contribution is removed from VTK's shading. Default: on.
+   */
+  vtkSetMacro(ConeShadows, vtkTypeBool);
+  vtkGetMacro(ConeShadows, vtkTypeBool);
+  vtkBooleanMacro(ConeShadows, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
+   * Full aperture of the shadow cones in degrees, in [0.5, 60]: wider is softer. Default: 6.
+   */
+  vtkSetClampMacro(ShadowConeAperture, double, 0.5, 60.0);
+  vtkGetMacro(ShadowConeAperture, double);
   ///@}
 
   ///@{
@@ -174,6 +326,11 @@ public:
     STAGE_VOXELIZE_STATIC,
     STAGE_VOXELIZE_DYNAMIC,
     STAGE_RESOLVE,
+    STAGE_LIGHT,
+    STAGE_MIPMAP,
+    STAGE_BOUNCE,
+    STAGE_GBUFFER,
+    STAGE_CONE_TRACE,
     STAGE_DEBUG_VIEW,
     NUMBER_OF_STAGES
   };
@@ -211,8 +368,21 @@ public:
     VOLUME_NORMAL,     ///< unsigned char RGBA, normal * 127.5 + 127.5
     VOLUME_EMISSION,   ///< float RGBA (only when the scene has emission)
     VOLUME_COUNT,      ///< unsigned int: fragments averaged into each voxel
-    VOLUME_FLAG        ///< unsigned char: 1 where a static actor wrote the voxel
+    VOLUME_FLAG,       ///< unsigned char: 1 where a static actor wrote the voxel
+    VOLUME_RADIANCE    ///< float RGBA: lit radiance (rgb) and occupancy (a)
   };
+
+  enum Images
+  {
+    IMAGE_COMPOSITE = 0, ///< the composited linear colour (before clamping for display)
+    IMAGE_INDIRECT       ///< indirect diffuse + specular light (rgb) and AO (a)
+  };
+
+  /**
+   * Copy a float image of the last GI frame (RGBA, the renderer's viewport size, rows bottom
+   * to top) into `pixels`. Returns false when the last frame did not trace.
+   */
+  bool GetFloatImage(int image, vtkFloatArray* pixels);
 
   /**
    * Copy a voxel volume of the last frame into `image` (point data "Voxels"; origin at the
@@ -237,11 +407,16 @@ protected:
   /// Render VTK's own image.
   void RenderDelegate(const vtkRenderState* s);
   /// Scan the scene and bring the voxel volumes up to date; false if GI cannot run.
-  bool UpdateVoxels(const vtkRenderState* s);
+  /// `changed` tells whether any voxel was rewritten.
+  bool UpdateVoxels(const vtkRenderState* s, bool& changed);
   /// Render the scanned actors into the accumulators (static ones only when `full`).
   void VoxelizeActors(vtkRenderer* renderer, bool full);
   /// OpenGL 4.3 available? Reports a missing capability once.
   bool CheckContext(vtkRenderWindow* renWin);
+  /// Light the voxels, build the mipmaps and bounce, when voxels, lights or settings changed.
+  bool UpdateRadiance(vtkRenderer* renderer, bool voxelsChanged);
+  /// G-buffer, cone tracing, composite and the remaining VTK steps.
+  void RenderGI(const vtkRenderState* s);
 
   vtkRenderPass* DelegatePass = nullptr;
   vtkTypeBool Enabled = 1;
@@ -251,6 +426,21 @@ protected:
   vtkTypeBool AutoDynamic = 1;
   vtkTypeBool HardwareConservativeRaster = 1;
   vtkTypeBool TimeStages = 0;
+  vtkTypeBool VoxelShadows = 1;
+  int Bounces = 1;
+  vtkTypeBool AnisotropicMipmaps = 1;
+  int DiffuseConeCount = 6;
+  double DiffuseConeAperture = 60.0;
+  double ConeStepFactor = 0.75;
+  double MaxTraceDistance = 1.0;
+  double ConeStartOffset = 1.5;
+  double IndirectIntensity = 1.0;
+  vtkTypeBool SpecularCone = 1;
+  double SpecularIntensity = 1.0;
+  double AmbientOcclusionStrength = 0.5;
+  double AmbientOcclusionFalloff = 0.05;
+  vtkTypeBool ConeShadows = 1;
+  double ShadowConeAperture = 6.0;
   bool GIActive = false;
 
 private:

@@ -1,0 +1,74 @@
+// Anisotropic mipmaps: one level of the six directional volumes (indexed by the direction a
+// cone travels) from the level below, or from the radiance volume for level 0. Along each
+// direction the two voxels of a 2x2x2 block are composited front to back (volumetric
+// integration), then the four results are averaged.
+layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+
+uniform sampler3D voxelRadiance;
+uniform sampler3D voxelPosX;
+uniform sampler3D voxelNegX;
+uniform sampler3D voxelPosY;
+uniform sampler3D voxelNegY;
+uniform sampler3D voxelPosZ;
+uniform sampler3D voxelNegZ;
+uniform int sourceIsRadiance; // 1: build level 0 from the radiance volume
+uniform int sourceLevel;      // otherwise: the directional level to read
+uniform int targetSize;       // voxels per axis of the level being written
+layout(rgba16f, binding = 0) uniform writeonly image3D outPosX;
+layout(rgba16f, binding = 1) uniform writeonly image3D outNegX;
+layout(rgba16f, binding = 2) uniform writeonly image3D outPosY;
+layout(rgba16f, binding = 3) uniform writeonly image3D outNegY;
+layout(rgba16f, binding = 4) uniform writeonly image3D outPosZ;
+layout(rgba16f, binding = 5) uniform writeonly image3D outNegZ;
+
+vec4 fetchSource(int direction, ivec3 c)
+{
+  if (sourceIsRadiance != 0)
+  {
+    return texelFetch(voxelRadiance, c, 0);
+  }
+  if (direction == 0) return texelFetch(voxelPosX, c, sourceLevel);
+  if (direction == 1) return texelFetch(voxelNegX, c, sourceLevel);
+  if (direction == 2) return texelFetch(voxelPosY, c, sourceLevel);
+  if (direction == 3) return texelFetch(voxelNegY, c, sourceLevel);
+  if (direction == 4) return texelFetch(voxelPosZ, c, sourceLevel);
+  return texelFetch(voxelNegZ, c, sourceLevel);
+}
+
+// Direction d travels along `axis`, positive when `positive`: the voxel with the smaller
+// coordinate on that axis is in front for positive travel.
+vec4 integrate(int direction, ivec3 base, int axis, bool positive)
+{
+  vec4 sum = vec4(0.0);
+  for (int i = 0; i < 2; ++i)
+  {
+    for (int j = 0; j < 2; ++j)
+    {
+      ivec3 a = base;
+      ivec3 b = base;
+      if (axis == 0) { a += ivec3(0, i, j); b += ivec3(1, i, j); }
+      else if (axis == 1) { a += ivec3(i, 0, j); b += ivec3(i, 1, j); }
+      else { a += ivec3(i, j, 0); b += ivec3(i, j, 1); }
+      vec4 front = fetchSource(direction, positive ? a : b);
+      vec4 back = fetchSource(direction, positive ? b : a);
+      sum += front + (1.0 - front.a) * back;
+    }
+  }
+  return sum * 0.25;
+}
+
+void main()
+{
+  ivec3 v = ivec3(gl_GlobalInvocationID);
+  if (any(greaterThanEqual(v, ivec3(targetSize))))
+  {
+    return;
+  }
+  ivec3 base = v * 2;
+  imageStore(outPosX, v, integrate(0, base, 0, true));
+  imageStore(outNegX, v, integrate(1, base, 0, false));
+  imageStore(outPosY, v, integrate(2, base, 1, true));
+  imageStore(outNegY, v, integrate(3, base, 1, false));
+  imageStore(outPosZ, v, integrate(4, base, 2, true));
+  imageStore(outNegZ, v, integrate(5, base, 2, false));
+}

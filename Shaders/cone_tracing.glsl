@@ -1,0 +1,77 @@
+// Voxel cone tracing over the radiance volume and its anisotropic mipmaps (six directional
+// volumes at half resolution, one per axis direction a cone can travel), shared by the
+// per-pixel trace and the per-voxel bounce. Needs lights.glsl (grid size) first.
+uniform sampler3D voxelRadiance; // rgb radiance premultiplied by a (occupancy); mips if isotropic
+uniform sampler3D voxelPosX;
+uniform sampler3D voxelNegX;
+uniform sampler3D voxelPosY;
+uniform sampler3D voxelNegY;
+uniform sampler3D voxelPosZ;
+uniform sampler3D voxelNegZ;
+uniform int voxelIsotropic;
+uniform float voxelMinLevel;  // 1 when the radiance volume itself must not be sampled
+uniform float coneStepFactor; // step length as a fraction of the cone diameter
+
+// Sample for a cone of `diameter` voxels travelling along `dir` at p (grid coordinates).
+vec4 voxelSampleCone(vec3 p, float diameter, vec3 dir)
+{
+  vec3 uvw = p / voxelGridInfo.y;
+  float level = max(log2(max(diameter, 1.0)), voxelMinLevel);
+  if (voxelIsotropic != 0)
+  {
+    return textureLod(voxelRadiance, uvw, level);
+  }
+  float lod = max(level - 1.0, 0.0);
+  vec3 w = dir * dir;
+  vec4 aniso = w.x * (dir.x >= 0.0 ? textureLod(voxelPosX, uvw, lod) : textureLod(voxelNegX, uvw, lod)) +
+    w.y * (dir.y >= 0.0 ? textureLod(voxelPosY, uvw, lod) : textureLod(voxelNegY, uvw, lod)) +
+    w.z * (dir.z >= 0.0 ? textureLod(voxelPosZ, uvw, lod) : textureLod(voxelNegZ, uvw, lod));
+  if (level >= 1.0)
+  {
+    return aniso;
+  }
+  // Between one and two voxels: blend the full-resolution volume into the first mip.
+  return mix(textureLod(voxelRadiance, uvw, 0.0), aniso, level);
+}
+
+// Front-to-back accumulation along a cone from `origin`, starting `start` voxels out:
+// returns radiance (rgb) and opacity (a); `occlusion` gets the opacity weighted down with
+// distance by `aoFalloff` (per voxel).
+vec4 voxelConeTrace(vec3 origin, vec3 dir, float tanHalf, float start, float maxDistance,
+  float aoFalloff, out float occlusion)
+{
+  vec4 acc = vec4(0.0);
+  occlusion = 0.0;
+  float res = voxelGridInfo.y;
+  float stepFactor = max(coneStepFactor, 0.05);
+  float t = max(start, 0.5);
+  // The step count is bounded whatever the settings: no endless loops.
+  for (int i = 0; i < 512 && t < maxDistance && acc.a < 0.99; ++i)
+  {
+    vec3 p = origin + dir * t;
+    if (any(lessThan(p, vec3(0.0))) || any(greaterThan(p, vec3(res))))
+    {
+      break;
+    }
+    float diameter = max(2.0 * tanHalf * t, 1.0);
+    vec4 s = voxelSampleCone(p, diameter, dir);
+    // Opacity correction for steps shorter or longer than the sample's extent.
+    float a = 1.0 - pow(clamp(1.0 - s.a, 0.0, 1.0), stepFactor);
+    vec3 c = s.a > 1e-4 ? s.rgb * (a / s.a) : vec3(0.0);
+    acc.rgb += (1.0 - acc.a) * c;
+    acc.a += (1.0 - acc.a) * a;
+    occlusion += (1.0 - occlusion) * a / (1.0 + aoFalloff * t);
+    t += diameter * stepFactor;
+  }
+  return acc;
+}
+
+// An orthonormal basis around unit n (Duff et al. 2017), for placing cones around a normal.
+void voxelBasis(vec3 n, out vec3 t, out vec3 b)
+{
+  float s = n.z >= 0.0 ? 1.0 : -1.0;
+  float a = -1.0 / (s + n.z);
+  float c = n.x * n.y * a;
+  t = vec3(1.0 + s * n.x * n.x * a, s * c, -s * n.x);
+  b = vec3(c, s + n.y * n.y * a, -n.y);
+}

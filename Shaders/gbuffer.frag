@@ -1,0 +1,21 @@
+// G-buffer outputs, appended to the end of main() of VTK's polydata fragment shader by
+// vtkVoxelGIPass while VTK renders the opaque geometry: attachment 0 keeps VTK's own shaded
+// colour, 1 gets the view-space normal and specular power, 2 the albedo (diffuse colour
+// times texture) and specular intensity. The pass defines VOXELGI_HAS_NORMAL and
+// VOXELGI_HAS_TEXTURE after what VTK's shader computes, and VOXELGI_AMBIENT_ONLY for lit
+// surfaces in a renderer without lights, whose flat colour GI replaces by ambient + indirect.
+#ifdef VOXELGI_HAS_TEXTURE
+  vec3 voxelgiTexture = tcolor.rgb;
+#else
+  vec3 voxelgiTexture = vec3(1.0);
+#endif
+#ifdef VOXELGI_AMBIENT_ONLY
+  gl_FragData[0].rgb = ambientColor * voxelgiTexture;
+#endif
+#ifdef VOXELGI_HAS_NORMAL
+  gl_FragData[1] = vec4(normalVCVSOutput, specularPower);
+#else
+  gl_FragData[1] = vec4(0.0, 0.0, 0.0, specularPower);
+#endif
+  gl_FragData[2] = vec4(diffuseColor * voxelgiTexture,
+    max(specularColor.r, max(specularColor.g, specularColor.b)));

@@ -1,0 +1,62 @@
+// One bounce of indirect diffuse light per voxel: cones over the voxel normal's hemisphere
+// (or six axis cones over the sphere where normals cancel) gather the previous radiance from
+// the mipmaps; radiance = direct + albedo x gathered. The cone weights sum to one and the
+// albedo is below one, so repeated bounces converge from below (energy bounded).
+layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+
+#include "lights.glsl"
+#include "cone_tracing.glsl"
+
+uniform sampler3D voxelAlbedo;
+uniform sampler3D voxelNormal;
+uniform sampler3D voxelDirect;
+uniform vec3 coneDirections[16]; // tangent space (z along the normal), cosine distributed
+uniform int coneCount;
+uniform float coneTanHalf;
+uniform float maxDistance;
+layout(rgba16f, binding = 0) uniform writeonly image3D radianceOut;
+
+const float maxHalf = 65504.0;
+
+void main()
+{
+  ivec3 v = ivec3(gl_GlobalInvocationID);
+  int res = int(voxelGridInfo.y);
+  if (any(greaterThanEqual(v, ivec3(res))))
+  {
+    return;
+  }
+  vec4 albedo = texelFetch(voxelAlbedo, v, 0);
+  if (albedo.a == 0.0)
+  {
+    return;
+  }
+  vec4 direct = texelFetch(voxelDirect, v, 0);
+  vec3 n = texelFetch(voxelNormal, v, 0).xyz * 2.0 - 1.0;
+  vec3 p = vec3(v) + 0.5;
+  vec3 gathered = vec3(0.0);
+  float ignored;
+  if (dot(n, n) < 0.25)
+  {
+    const vec3 axes[6] = vec3[6](vec3(1, 0, 0), vec3(-1, 0, 0), vec3(0, 1, 0), vec3(0, -1, 0),
+      vec3(0, 0, 1), vec3(0, 0, -1));
+    for (int i = 0; i < 6; ++i)
+    {
+      gathered += voxelConeTrace(p + axes[i], axes[i], coneTanHalf, 1.0, maxDistance, 0.0, ignored).rgb;
+    }
+    gathered /= 6.0;
+  }
+  else
+  {
+    n = normalize(n);
+    vec3 t, b;
+    voxelBasis(n, t, b);
+    for (int i = 0; i < coneCount; ++i)
+    {
+      vec3 d = normalize(coneDirections[i].x * t + coneDirections[i].y * b + coneDirections[i].z * n);
+      gathered += voxelConeTrace(p + n, d, coneTanHalf, 1.0, maxDistance, 0.0, ignored).rgb;
+    }
+    gathered /= float(coneCount);
+  }
+  imageStore(radianceOut, v, vec4(min(direct.rgb + albedo.rgb * gathered, vec3(maxHalf)), 1.0));
+}

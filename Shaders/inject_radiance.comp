@@ -1,0 +1,90 @@
+// Voxel direct lighting: outgoing radiance of every occupied voxel from the renderer's lights
+// (VTK's light model, normal-weighted attenuation of the deferred-voxel-shading technique,
+// soft voxel shadows by a raymarch toward the light) plus the voxel's emission.
+layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+
+#include "lights.glsl"
+
+uniform sampler3D voxelAlbedo; // rgb albedo, a occupancy; linear filtering softens shadow edges
+uniform sampler3D voxelNormal;
+uniform sampler3D voxelEmission;
+uniform int hasEmission;
+uniform int voxelShadows;
+layout(rgba16f, binding = 0) uniform writeonly image3D radianceOut;
+layout(rgba16f, binding = 1) uniform writeonly image3D directOut;
+uniform int writeDirect;
+
+const float maxHalf = 65504.0;
+
+// Transmittance from p toward the light: products of (1 - occupancy) along the ray.
+float voxelShadow(vec3 p, vec3 side, vec3 toLight, float distance)
+{
+  float res = voxelGridInfo.y;
+  // Leave the voxel's own surface layer (conservative voxelization makes it up to two
+  // voxels thick) before testing for occluders, also toward grazing lights.
+  vec3 origin = p + side * 1.5;
+  float transmittance = 1.0;
+  float start = max(1.0, 1.5 / max(dot(side, toLight), 0.1));
+  for (float t = start; t < min(distance, 2.0 * res) && transmittance > 0.01; t += 1.0)
+  {
+    vec3 q = origin + toLight * t;
+    if (any(lessThan(q, vec3(0.0))) || any(greaterThan(q, vec3(res))))
+    {
+      break;
+    }
+    transmittance *= 1.0 - textureLod(voxelAlbedo, q / res, 0.0).a;
+  }
+  return transmittance;
+}
+
+// Normal-weighted attenuation: per dominant voxel face, weighted by the squared components
+// of the averaged voxel normal. Zero normals (opposing surfaces in one voxel) use half.
+float voxelNormalWeighted(vec3 n, vec3 toLight, bool twoSided)
+{
+  if (dot(n, n) < 0.25)
+  {
+    return 0.5;
+  }
+  vec3 w = n * n;
+  vec3 d = twoSided ? abs(toLight) : max(mix(-toLight, toLight, greaterThan(n, vec3(0.0))), 0.0);
+  return dot(w, d);
+}
+
+void main()
+{
+  ivec3 v = ivec3(gl_GlobalInvocationID);
+  int res = int(voxelGridInfo.y);
+  if (any(greaterThanEqual(v, ivec3(res))))
+  {
+    return;
+  }
+  vec4 albedo = texelFetch(voxelAlbedo, v, 0);
+  vec4 result = vec4(0.0);
+  if (albedo.a > 0.0)
+  {
+    vec3 n = texelFetch(voxelNormal, v, 0).xyz * 2.0 - 1.0;
+    vec3 p = vec3(v) + 0.5;
+    vec3 radiance = hasEmission != 0 ? texelFetch(voxelEmission, v, 0).rgb : vec3(0.0);
+    bool twoSided = voxelLightInfo.y != 0;
+    for (int l = 0; l < voxelLightInfo.x; ++l)
+    {
+      vec3 toLight;
+      float distance;
+      float attenuation = voxelLightIncidence(l, p, toLight, distance);
+      float lambert = voxelNormalWeighted(n, toLight, twoSided);
+      if (!(attenuation * lambert > 0.0))
+      {
+        continue;
+      }
+      vec3 side = dot(n, n) < 0.25 ? toLight : (dot(n, toLight) >= 0.0 ? n : -n);
+      float visibility = voxelShadows != 0 ? voxelShadow(p, side, toLight, distance) : 1.0;
+      radiance += albedo.rgb * voxelLights[l].color.rgb * (attenuation * lambert * visibility);
+    }
+    result = vec4(min(radiance, vec3(maxHalf)), 1.0);
+  }
+  imageStore(radianceOut, v, result);
+  if (writeDirect != 0)
+  {
+    imageStore(directOut, v, result);
+  }
+}

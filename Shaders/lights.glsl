@@ -1,0 +1,44 @@
+// The renderer's lights in voxel grid coordinates (one uniform block, filled once per frame)
+// and VTK's light model (as vtkOpenGLPolyDataMapper shades: positional attenuation, spot cone
+// and exponent) evaluated in the same space.
+#define VOXELGI_MAX_LIGHTS 16
+
+struct VoxelLight
+{
+  vec4 position;    // xyz: position (grid voxels); w: 1 positional, 0 directional
+  vec4 direction;   // xyz: unit direction the light travels; w: cos(cone angle), -2 if no spot
+  vec4 color;       // rgb: colour x intensity; w: spot exponent
+  vec4 attenuation; // xyz: constant, linear, quadratic (world units); w: 1 for a headlight
+};
+
+layout(std140) uniform VoxelLightBlock
+{
+  VoxelLight voxelLights[VOXELGI_MAX_LIGHTS];
+  ivec4 voxelLightInfo; // x: light count, y: two-sided lighting
+  vec4 voxelGridInfo;   // x: voxel size (world units), y: voxels per axis
+};
+
+// Unit direction toward light `l` from p (grid coordinates), the distance to it (voxels;
+// huge for directional lights) and VTK's attenuation there (spot cone included).
+float voxelLightIncidence(int l, vec3 p, out vec3 toLight, out float distance)
+{
+  VoxelLight light = voxelLights[l];
+  if (light.position.w == 0.0)
+  {
+    toLight = -light.direction.xyz;
+    distance = 1e30;
+    return 1.0;
+  }
+  vec3 d = light.position.xyz - p;
+  distance = length(d);
+  toLight = distance > 0.0 ? d / distance : vec3(0.0, 0.0, 1.0);
+  float w = distance * voxelGridInfo.x;
+  float attenuation =
+    1.0 / max(light.attenuation.x + light.attenuation.y * w + light.attenuation.z * w * w, 1e-20);
+  if (light.direction.w > -1.5)
+  {
+    float coneDot = dot(-toLight, light.direction.xyz);
+    attenuation = coneDot >= light.direction.w ? attenuation * pow(max(coneDot, 0.0), light.color.w) : 0.0;
+  }
+  return attenuation;
+}

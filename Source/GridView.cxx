@@ -1,0 +1,39 @@
+#include "GridView.h"
+
+#include "VoxelGrid.h"
+
+#include "vtkCamera.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkRenderer.h"
+
+namespace voxelgi
+{
+
+void GridFromNDC(vtkRenderer* renderer, const VoxelGrid& grid, float columnMajor[16])
+{
+  int width = 0, height = 0, x = 0, y = 0;
+  renderer->GetTiledSizeAndOrigin(&width, &height, &x, &y);
+  const double aspect = height > 0 ? static_cast<double>(width) / height : 1.0;
+  vtkNew<vtkMatrix4x4> worldFromNDC;
+  worldFromNDC->DeepCopy(
+    renderer->GetActiveCamera()->GetCompositeProjectionTransformMatrix(aspect, -1, 1));
+  worldFromNDC->Invert();
+  vtkNew<vtkMatrix4x4> gridFromWorld;
+  for (int a = 0; a < 3; ++a)
+  {
+    gridFromWorld->SetElement(a, a, 1.0 / grid.VoxelSize);
+    gridFromWorld->SetElement(a, 3, -grid.Origin[a] / grid.VoxelSize);
+  }
+  vtkNew<vtkMatrix4x4> gridFromNDC;
+  vtkMatrix4x4::Multiply4x4(gridFromWorld, worldFromNDC, gridFromNDC);
+  for (int r = 0; r < 4; ++r)
+  {
+    for (int c = 0; c < 4; ++c)
+    {
+      columnMajor[c * 4 + r] = static_cast<float>(gridFromNDC->GetElement(r, c));
+    }
+  }
+}
+
+}

@@ -1,0 +1,20 @@
+/**
+ * The renderer's camera seen from the voxel grid: the matrix from normalized device
+ * coordinates to grid (voxel) coordinates, composed in double precision so that the large
+ * translations of a far-from-origin scene cancel before anything is rounded to float.
+ */
+#ifndef VoxelGIGridView_h
+#define VoxelGIGridView_h
+
+class vtkRenderer;
+
+namespace voxelgi
+{
+struct VoxelGrid;
+
+/// Column-major 4x4 (for glUniformMatrix4fv).
+void GridFromNDC(vtkRenderer* renderer, const VoxelGrid& grid, float columnMajor[16]);
+
+}
+
+#endif

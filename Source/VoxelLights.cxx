@@ -1,0 +1,94 @@
+#include "VoxelLights.h"
+
+#include "VoxelGrid.h"
+
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
+#include "vtkMath.h"
+#include "vtkRenderer.h"
+
+#include <cmath>
+#include <cstring>
+
+namespace voxelgi
+{
+
+bool VoxelLights::Gather(vtkRenderer* renderer, const VoxelGrid& grid, int& dropped)
+{
+  Block block{};
+  int count = 0;
+  dropped = 0;
+  vtkLightCollection* lights = renderer->GetLights();
+  vtkCollectionSimpleIterator it;
+  lights->InitTraversal(it);
+  while (vtkLight* light = lights->GetNextLight(it))
+  {
+    if (!light->GetSwitch() || light->GetIntensity() <= 0.0)
+    {
+      continue;
+    }
+    if (count == MaxLights)
+    {
+      ++dropped;
+      continue;
+    }
+    Light& l = block.Lights[count++];
+    double position[3], focal[3];
+    light->GetTransformedPosition(position);
+    light->GetTransformedFocalPoint(focal);
+    double direction[3] = { focal[0] - position[0], focal[1] - position[1], focal[2] - position[2] };
+    if (vtkMath::Normalize(direction) == 0.0)
+    {
+      direction[2] = -1.0;
+    }
+    const glm::dvec3 p = grid.ToVoxel(glm::dvec3(position[0], position[1], position[2]));
+    const bool positional = light->GetPositional() != 0;
+    for (int a = 0; a < 3; ++a)
+    {
+      l.Position[a] = static_cast<float>(p[a]);
+      l.Direction[a] = static_cast<float>(direction[a]);
+      l.Color[a] = static_cast<float>(light->GetDiffuseColor()[a] * light->GetIntensity());
+      l.Attenuation[a] = static_cast<float>(light->GetAttenuationValues()[a]);
+    }
+    l.Position[3] = positional ? 1.0f : 0.0f;
+    // VTK treats positional lights with a cone angle below 90 degrees as spots.
+    const double cone = light->GetConeAngle();
+    l.Direction[3] = (positional && cone < 90.0)
+      ? static_cast<float>(std::cos(vtkMath::RadiansFromDegrees(cone)))
+      : -2.0f;
+    l.Color[3] = static_cast<float>(light->GetExponent());
+    l.Attenuation[3] = light->LightTypeIsHeadlight() ? 1.0f : 0.0f;
+  }
+  block.Info[0] = count;
+  block.Info[1] = renderer->GetTwoSidedLighting() ? 1 : 0;
+  block.Grid[0] = static_cast<float>(grid.VoxelSize);
+  block.Grid[1] = static_cast<float>(grid.Resolution);
+  const bool changed = !this->HaveUploaded || std::memcmp(&block, &this->Uploaded, sizeof(Block)) != 0;
+  this->Data = block;
+  this->Count = count;
+  return changed;
+}
+
+void VoxelLights::Bind()
+{
+  if (!this->Buffer.IsAllocated())
+  {
+    this->Buffer.Allocate(sizeof(Block));
+    this->HaveUploaded = false;
+  }
+  if (!this->HaveUploaded || std::memcmp(&this->Data, &this->Uploaded, sizeof(Block)) != 0)
+  {
+    this->Buffer.Upload(&this->Data, sizeof(Block));
+    this->Uploaded = this->Data;
+    this->HaveUploaded = true;
+  }
+  this->Buffer.BindUniform(Binding);
+}
+
+void VoxelLights::ReleaseGraphicsResources()
+{
+  this->Buffer.Release();
+  this->HaveUploaded = false;
+}
+
+}

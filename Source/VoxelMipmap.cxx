@@ -1,0 +1,117 @@
+#include "VoxelMipmap.h"
+
+#include "VoxelGIShaders.h"
+
+#include "vtk_glew.h"
+
+#include <algorithm>
+
+namespace voxelgi
+{
+
+namespace
+{
+constexpr int LocalSize = 4;
+const char* const SourceNames[6] = { "voxelPosX", "voxelNegX", "voxelPosY", "voxelNegY",
+  "voxelPosZ", "voxelNegZ" };
+}
+
+int MipLevels(int resolution)
+{
+  int levels = 1;
+  while ((resolution >> levels) > 0)
+  {
+    ++levels;
+  }
+  return levels;
+}
+
+bool VoxelMipmap::Prepare(int resolution, bool anisotropic, std::string& error)
+{
+  this->Anisotropic = anisotropic;
+  if (!anisotropic)
+  {
+    for (auto& volume : this->Directional)
+    {
+      volume.Release();
+    }
+    return true;
+  }
+  const int half = std::max(resolution / 2, 1);
+  for (auto& volume : this->Directional)
+  {
+    if (!volume.Allocate(GL_RGBA16F, half, MipLevels(half)))
+    {
+      error = "could not allocate the directional (anisotropic) volumes";
+      return false;
+    }
+  }
+  if (!this->Program.IsReady())
+  {
+    std::string log;
+    if (!this->Program.Build("", shaders::aniso_mipmap_comp, log))
+    {
+      error = "anisotropic mipmap shader failed to build: " + log;
+      return false;
+    }
+  }
+  return true;
+}
+
+void VoxelMipmap::Build(vtkOpenGLRenderWindow* renWin, Volume3D& radiance)
+{
+  if (!this->Anisotropic)
+  {
+    radiance.GenerateMipmaps();
+    return;
+  }
+  SamplerBindings samplers(renWin);
+  const int radianceUnit = samplers.Add(radiance);
+  int units[6];
+  for (int d = 0; d < 6; ++d)
+  {
+    units[d] = samplers.Add(this->Directional[d]);
+  }
+  this->Program.Use(renWin);
+  this->Program.SetInt("voxelRadiance", radianceUnit);
+  for (int d = 0; d < 6; ++d)
+  {
+    this->Program.SetInt(SourceNames[d], units[d]);
+  }
+  const int levels = this->Directional[0].Levels();
+  for (int level = 0; level < levels; ++level)
+  {
+    const int size = std::max(this->Directional[0].Resolution() >> level, 1);
+    for (int d = 0; d < 6; ++d)
+    {
+      this->Directional[d].BindImage(static_cast<unsigned int>(d), GL_WRITE_ONLY, level);
+    }
+    this->Program.Use(renWin);
+    this->Program.SetInt("sourceIsRadiance", level == 0 ? 1 : 0);
+    this->Program.SetInt("sourceLevel", level - 1);
+    this->Program.SetInt("targetSize", size);
+    this->Program.DispatchCube(size, LocalSize);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  }
+}
+
+std::size_t VoxelMipmap::MemoryBytes() const
+{
+  std::size_t bytes = 0;
+  for (const auto& volume : this->Directional)
+  {
+    bytes += volume.Bytes();
+  }
+  return bytes;
+}
+
+void VoxelMipmap::ReleaseGraphicsResources()
+{
+  for (auto& volume : this->Directional)
+  {
+    volume.Release();
+  }
+  this->Program.Release();
+}
+
+}
