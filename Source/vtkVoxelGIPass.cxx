@@ -18,6 +18,7 @@
 #include "vtkInformation.h"
 #include "vtkInformationDoubleVectorKey.h"
 #include "vtkInformationIntegerKey.h"
+#include "vtkLightCollection.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
@@ -558,7 +559,12 @@ bool vtkVoxelGIPass::UpdateRadiance(vtkRenderer* renderer, bool voxelsChanged)
   vtkOpenGLRenderWindow* renWin = in.Window;
   const bool timed = this->TimeStages != 0;
 
-  // Headlights and camera lights follow the camera: place them before reading them.
+  // VTK creates its automatic headlight and places headlights and camera lights while
+  // rendering; do both before reading the lights, or the first frame would see none.
+  if (renderer->GetAutomaticLightCreation() && renderer->GetLights()->GetNumberOfItems() == 0)
+  {
+    renderer->CreateLight();
+  }
   renderer->UpdateLightsGeometryToFollowCamera();
   int dropped = 0;
   const bool lightsChanged = in.Lights.Gather(renderer, in.Grid, dropped);
