@@ -84,7 +84,7 @@ void main()
   {
     vec3 d = normalize(coneDirections[i].x * t + coneDirections[i].y * b + coneDirections[i].z * n);
     float coneOcclusion;
-    gathered += voxelConeTrace(origin, d, diffuseTanHalf, 1.0, maxDistance, aoFalloff, coneOcclusion).rgb;
+    gathered += voxelConeTrace(origin, d, diffuseTanHalf, 1.0, maxDistance, aoFalloff, p, n, coneOcclusion).rgb;
     occlusion += coneOcclusion;
   }
   gathered /= float(max(coneCount, 1));
@@ -96,7 +96,7 @@ void main()
     vec3 r = reflect(viewDir, n);
     float ignored;
     indirect += specular * specularIntensity *
-      voxelConeTrace(origin, r, specularTanHalf(normalSpec.w), 1.0, maxDistance, 0.0, ignored).rgb;
+      voxelConeTrace(origin, r, specularTanHalf(normalSpec.w), 1.0, maxDistance, 0.0, p, n, ignored).rgb;
   }
 
   vec3 direct = color.rgb;
@@ -123,7 +123,7 @@ void main()
       // (the ceiling a lamp hangs from) does not shadow everything it lights.
       float end = min(distance - max(2.0, 2.0 * shadowTanHalf * distance), maxDistance);
       float shadow;
-      voxelConeTrace(origin, toLight, shadowTanHalf, start, end, 0.0, shadow);
+      voxelConeTrace(origin, toLight, shadowTanHalf, start, end, 0.0, p, n, shadow);
       float sf = attenuation * pow(max(dot(reflect(-toLight, n), -viewDir), 0.0), normalSpec.w);
       vec3 contribution = (df * albedo + sf * specular) * voxelLights[l].color.rgb;
       direct -= shadow * contribution;

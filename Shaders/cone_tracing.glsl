@@ -37,8 +37,14 @@ vec4 voxelSampleCone(vec3 p, float diameter, vec3 dir)
 // Front-to-back accumulation along a cone from `origin`, starting `start` voxels out:
 // returns radiance (rgb) and opacity (a); `occlusion` gets the opacity weighted down with
 // distance by `aoFalloff` (per voxel).
+//
+// A filtered sample of texel size s reaches texels up to 1.5 s away, and the surface's own
+// voxels extend up to a voxel above it. So near the surface the cone starts from (plane
+// through `surface` with unit normal `surfaceNormal`; a zero normal disables this) samples
+// use the coarsest level whose reach, and that of the level blended with it, stays above the
+// surface's voxels: a surface never shadows or lights itself.
 vec4 voxelConeTrace(vec3 origin, vec3 dir, float tanHalf, float start, float maxDistance,
-  float aoFalloff, out float occlusion)
+  float aoFalloff, vec3 surface, vec3 surfaceNormal, out float occlusion)
 {
   vec4 acc = vec4(0.0);
   occlusion = 0.0;
@@ -53,7 +59,13 @@ vec4 voxelConeTrace(vec3 origin, vec3 dir, float tanHalf, float start, float max
     {
       break;
     }
-    float diameter = max(2.0 * tanHalf * t, 1.0);
+    float diameter = 2.0 * tanHalf * t;
+    if (dot(surfaceNormal, surfaceNormal) > 0.0)
+    {
+      float height = dot(p - surface, surfaceNormal);
+      diameter = min(diameter, exp2(floor(log2(max((height - 1.0) / 1.5, 1.0)))));
+    }
+    diameter = max(diameter, 1.0);
     vec4 s = voxelSampleCone(p, diameter, dir);
     // Opacity correction for steps shorter or longer than the sample's extent.
     float a = 1.0 - pow(clamp(1.0 - s.a, 0.0, 1.0), stepFactor);

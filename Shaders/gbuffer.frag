@@ -1,8 +1,8 @@
 // G-buffer outputs, appended to the end of main() of VTK's polydata fragment shader by
 // vtkVoxelGIPass while VTK renders the opaque geometry: attachment 0 keeps VTK's own shaded
 // colour, 1 gets the view-space normal and specular power, 2 the albedo (diffuse colour
-// times texture) and specular intensity. The pass defines VOXELGI_HAS_NORMAL and
-// VOXELGI_HAS_TEXTURE after what VTK's shader computes, and VOXELGI_AMBIENT_ONLY for lit
+// times texture) and specular intensity. The pass defines VOXELGI_HAS_NORMAL,
+// VOXELGI_HAS_TEXTURE and VOXELGI_HAS_SPECULAR after what VTK's shader computes, and VOXELGI_AMBIENT_ONLY for lit
 // surfaces in a renderer without lights, whose flat colour GI replaces by ambient + indirect.
 #ifdef VOXELGI_HAS_TEXTURE
   vec3 voxelgiTexture = tcolor.rgb;
@@ -12,10 +12,16 @@
 #ifdef VOXELGI_AMBIENT_ONLY
   gl_FragData[0].rgb = ambientColor * voxelgiTexture;
 #endif
-#ifdef VOXELGI_HAS_NORMAL
-  gl_FragData[1] = vec4(normalVCVSOutput, specularPower);
+#ifdef VOXELGI_HAS_SPECULAR
+  float voxelgiSpecularPower = specularPower;
+  float voxelgiSpecular = max(specularColor.r, max(specularColor.g, specularColor.b));
 #else
-  gl_FragData[1] = vec4(0.0, 0.0, 0.0, specularPower);
+  float voxelgiSpecularPower = 1.0;
+  float voxelgiSpecular = 0.0;
 #endif
-  gl_FragData[2] = vec4(diffuseColor * voxelgiTexture,
-    max(specularColor.r, max(specularColor.g, specularColor.b)));
+#ifdef VOXELGI_HAS_NORMAL
+  gl_FragData[1] = vec4(normalVCVSOutput, voxelgiSpecularPower);
+#else
+  gl_FragData[1] = vec4(0.0, 0.0, 0.0, voxelgiSpecularPower);
+#endif
+  gl_FragData[2] = vec4(diffuseColor * voxelgiTexture, voxelgiSpecular);

@@ -42,7 +42,7 @@ void main()
       vec3(0, 0, 1), vec3(0, 0, -1));
     for (int i = 0; i < 6; ++i)
     {
-      gathered += voxelConeTrace(p + axes[i], axes[i], coneTanHalf, 1.0, maxDistance, 0.0, ignored).rgb;
+      gathered += voxelConeTrace(p + axes[i], axes[i], coneTanHalf, 1.0, maxDistance, 0.0, p, vec3(0.0), ignored).rgb;
     }
     gathered /= 6.0;
   }
@@ -54,7 +54,7 @@ void main()
     for (int i = 0; i < coneCount; ++i)
     {
       vec3 d = normalize(coneDirections[i].x * t + coneDirections[i].y * b + coneDirections[i].z * n);
-      gathered += voxelConeTrace(p + n, d, coneTanHalf, 1.0, maxDistance, 0.0, ignored).rgb;
+      gathered += voxelConeTrace(p + n * 1.5, d, coneTanHalf, 1.0, maxDistance, 0.0, p, n, ignored).rgb;
     }
     gathered /= float(coneCount);
   }

@@ -141,8 +141,12 @@ void ConeTracer::Trace(vtkRenderer* renderer, const VoxelGrid& grid, const GBuff
   this->Framebuffer->ActivateDrawBuffers(2);
   this->Framebuffer->StartNonOrtho(w, h);
   vtkOpenGLState* ostate = renWin->GetState();
+  vtkOpenGLState::ScopedglViewport viewport(ostate);
+  vtkOpenGLState::ScopedglScissor scissor(ostate);
   vtkOpenGLState::ScopedglEnableDisable depthTest(ostate, GL_DEPTH_TEST);
   vtkOpenGLState::ScopedglEnableDisable blend(ostate, GL_BLEND);
+  ostate->vtkglViewport(0, 0, w, h);
+  ostate->vtkglScissor(0, 0, w, h);
   ostate->vtkglDisable(GL_DEPTH_TEST);
   ostate->vtkglDisable(GL_BLEND);
   this->TraceQuad->Render();

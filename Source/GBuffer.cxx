@@ -102,6 +102,10 @@ void GBuffer::PostReplaceShaders(std::string& fragment, vtkProp* prop, bool litS
   {
     defines += "#define VOXELGI_HAS_TEXTURE\n";
   }
+  if (fragment.find("float specularPower =") != std::string::npos)
+  {
+    defines += "#define VOXELGI_HAS_SPECULAR\n";
+  }
   vtkActor* actor = vtkActor::SafeDownCast(prop);
   if (!litScene && actor && actor->GetProperty()->GetLighting())
   {

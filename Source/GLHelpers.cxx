@@ -149,9 +149,11 @@ bool Volume3D::Allocate(unsigned int internalFormat, int resolution, int levels)
     integer ? GL_NEAREST : (levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR));
   glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAX_LEVEL, levels - 1);
   glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, integer ? GL_NEAREST : GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
-  glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
-  glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_BORDER);
+  // Clamp to the edge texels: a transparent border would dilute coarse samples of geometry
+  // near the grid's faces (rays and cones stop at the grid themselves).
+  glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
   glBindTexture(GL_TEXTURE_3D, 0);
   if (glGetError() != GL_NO_ERROR)
   {

@@ -22,19 +22,23 @@ constexpr int LocalSize = 4;
 void ConeSettings::Set(int count, double apertureDegrees, double stepFactor, double maxDistance)
 {
   this->Count = std::max(1, std::min(count, 16));
+  const double halfAngle = vtkMath::RadiansFromDegrees(0.5 * apertureDegrees);
+  // A cone tilted further than this from the normal would sweep through the voxels of the
+  // surface it starts on (its lower edge sinks faster than its axis rises).
+  const double maxPolar = 0.5 * vtkMath::Pi() - std::asin(std::min(std::tan(halfAngle), 1.0));
   const double golden = vtkMath::Pi() * (3.0 - std::sqrt(5.0));
   for (int i = 0; i < this->Count; ++i)
   {
-    // Cosine-weighted: equal-weight cones then estimate irradiance / pi directly.
-    const double u = (i + 0.5) / this->Count;
-    const double sinTheta = std::sqrt(this->Count == 1 ? 0.0 : u);
-    const double cosTheta = std::sqrt(std::max(0.0, 1.0 - sinTheta * sinTheta));
+    // Cosine-weighted spiral (equal-weight cones then estimate irradiance / pi), its polar
+    // angles compressed into [0, maxPolar].
+    const double u = this->Count == 1 ? 0.0 : (i + 0.5) / this->Count;
+    const double polar = std::asin(std::sqrt(u)) * maxPolar / (0.5 * vtkMath::Pi());
     const double phi = golden * i;
-    this->Directions[3 * i] = static_cast<float>(sinTheta * std::cos(phi));
-    this->Directions[3 * i + 1] = static_cast<float>(sinTheta * std::sin(phi));
-    this->Directions[3 * i + 2] = static_cast<float>(cosTheta);
+    this->Directions[3 * i] = static_cast<float>(std::sin(polar) * std::cos(phi));
+    this->Directions[3 * i + 1] = static_cast<float>(std::sin(polar) * std::sin(phi));
+    this->Directions[3 * i + 2] = static_cast<float>(std::cos(polar));
   }
-  this->TanHalf = static_cast<float>(std::tan(vtkMath::RadiansFromDegrees(0.5 * apertureDegrees)));
+  this->TanHalf = static_cast<float>(std::tan(halfAngle));
   this->StepFactor = static_cast<float>(stepFactor);
   this->MaxDistance = static_cast<float>(maxDistance);
 }

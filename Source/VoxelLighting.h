@@ -27,8 +27,8 @@ struct ConeSettings
   float StepFactor = 1.f;
   float MaxDistance = 0.f; // voxels
 
-  /// Fill `count` cosine-distributed directions (a golden-angle spiral over the hemisphere)
-  /// for cones of full aperture `apertureDegrees`.
+  /// Fill `count` cosine-distributed directions (a golden-angle spiral over the hemisphere,
+  /// kept clear of the surface's own plane) for cones of full aperture `apertureDegrees`.
   void Set(int count, double apertureDegrees, double stepFactor, double maxDistance);
 };
 

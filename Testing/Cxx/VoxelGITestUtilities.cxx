@@ -1,5 +1,21 @@
 #include "VoxelGITestUtilities.h"
 
+#include "vtkVoxelGIPass.h"
+#include "vtkVoxelGIScenes.h"
+
+#include "vtkActor.h"
+#include "vtkAlgorithm.h"
+#include "vtkDataArray.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkPlaneSource.h"
+#include "vtkPointData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkRegressionTestImage.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
 #include "vtkTesting.h"
 
 #include <algorithm>
@@ -26,6 +42,92 @@ int ImageMatches(int regressionResult)
   return (regressionResult == vtkTesting::PASSED || regressionResult == vtkTesting::DO_INTERACTOR)
     ? EXIT_SUCCESS
     : EXIT_FAILURE;
+}
+
+bool AllFinite(vtkVoxelGIPass* gi)
+{
+  vtkNew<vtkImageData> radiance;
+  if (gi->GetVoxelVolume(vtkVoxelGIPass::VOLUME_RADIANCE, radiance))
+  {
+    vtkDataArray* values = radiance->GetPointData()->GetScalars();
+    for (vtkIdType i = 0; i < values->GetNumberOfValues(); ++i)
+    {
+      if (!std::isfinite(values->GetVariantValue(i).ToDouble()))
+      {
+        std::cerr << "non-finite radiance at voxel value " << i << std::endl;
+        return false;
+      }
+    }
+  }
+  vtkNew<vtkFloatArray> image;
+  if (gi->GetFloatImage(vtkVoxelGIPass::IMAGE_COMPOSITE, image))
+  {
+    for (vtkIdType i = 0; i < image->GetNumberOfValues(); ++i)
+    {
+      if (!std::isfinite(image->GetValue(i)))
+      {
+        std::cerr << "non-finite composite pixel value " << i << std::endl;
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+double MeanOver(vtkFloatArray* image, int w, int x0, int y0, int x1, int y1, int c)
+{
+  double sum = 0.0;
+  int n = 0;
+  for (int y = y0; y < y1; ++y)
+  {
+    for (int x = x0; x < x1; ++x)
+    {
+      sum += image->GetComponent(static_cast<vtkIdType>(y) * w + x, c);
+      ++n;
+    }
+  }
+  return n ? sum / n : 0.0;
+}
+
+vtkActor* AddActor(vtkRenderer* renderer, vtkAlgorithm* source, double r, double g, double b)
+{
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(source->GetOutputPort());
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(r, g, b);
+  renderer->AddActor(actor);
+  return actor;
+}
+
+vtkActor* AddQuad(vtkRenderer* renderer, const glm::dvec3& o, const glm::dvec3& p1,
+  const glm::dvec3& p2, double r, double g, double b)
+{
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(o.x, o.y, o.z);
+  plane->SetPoint1(p1.x, p1.y, p1.z);
+  plane->SetPoint2(p2.x, p2.y, p2.z);
+  return AddActor(renderer, plane, r, g, b);
+}
+
+int CornellRegressionTest(int argc, char* argv[], int debugView)
+{
+  vtkNew<vtkRenderer> renderer;
+  vtkVoxelGIScenes::AddCornellBox(renderer);
+  vtkNew<vtkRenderWindow> window;
+  window->SetSize(200, 200);
+  window->AddRenderer(renderer);
+  vtkNew<vtkVoxelGIPass> gi;
+  gi->SetVoxelResolution(64);
+  gi->SetDebugView(debugView);
+  renderer->SetPass(gi);
+  window->Render();
+  if (!gi->GetGIActive() || !AllFinite(gi))
+  {
+    std::cerr << "GI did not run, or produced non-finite values" << std::endl;
+    return EXIT_FAILURE;
+  }
+  return ImageMatches(vtkRegressionTestImage(window));
 }
 
 bool TriangleBoxOverlap(const glm::dvec3& boxCenter, const glm::dvec3& boxHalf,

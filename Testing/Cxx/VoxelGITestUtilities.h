@@ -6,8 +6,12 @@
 
 #include <iostream>
 
+class vtkActor;
+class vtkAlgorithm;
+class vtkFloatArray;
 class vtkRenderWindow;
 class vtkRenderer;
+class vtkVoxelGIPass;
 
 namespace voxelgi_test
 {
@@ -20,6 +24,24 @@ bool TriangleBoxOverlap(const glm::dvec3& boxCenter, const glm::dvec3& boxHalf,
 /// Exit code for a regression-image result: only a passed comparison passes (a test run
 /// without a baseline reports NOT_RUN, which must not count as success).
 int ImageMatches(int regressionResult);
+
+/// True when the radiance volume and the composited float image hold only finite values
+/// (prints what is not).
+bool AllFinite(vtkVoxelGIPass* gi);
+
+/// Mean of component `c` of an RGBA float image of width `w` over pixels [x0, x1) x [y0, y1).
+double MeanOver(vtkFloatArray* image, int w, int x0, int y0, int x1, int y1, int c);
+
+/// Renders the Cornell box with GI (64^3 voxels, 200 x 200 pixels) in `debugView`, checks
+/// that everything stays finite and compares with the test's baseline image.
+int CornellRegressionTest(int argc, char* argv[], int debugView);
+
+/// Add an actor drawing `source`'s output in colour (r, g, b) to `renderer`.
+vtkActor* AddActor(vtkRenderer* renderer, vtkAlgorithm* source, double r, double g, double b);
+
+/// Add a quad from `o` spanned by p1 - o and p2 - o (normal (p1 - o) x (p2 - o)).
+vtkActor* AddQuad(vtkRenderer* renderer, const glm::dvec3& o, const glm::dvec3& p1,
+  const glm::dvec3& p2, double r, double g, double b);
 
 /// Prints a failure and returns false when the condition does not hold.
 #define VOXELGI_CHECK(condition, message)                                                    \
