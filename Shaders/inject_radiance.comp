@@ -1,6 +1,7 @@
 // Voxel direct lighting: outgoing radiance of every occupied voxel from the renderer's lights
 // (VTK's light model, normal-weighted attenuation of the deferred-voxel-shading technique,
-// soft voxel shadows by a raymarch toward the light) plus the voxel's emission.
+// occlusion by soft voxel shadows raymarched toward the light or, with VOXELGI_SHADOW_MAPS,
+// by the directional and spot lights' shadow maps) plus the voxel's emission.
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 
 #include "lights.glsl"
@@ -9,7 +10,12 @@ uniform sampler3D voxelAlbedo; // rgb albedo, a occupancy; linear filtering soft
 uniform sampler3D voxelNormal;
 uniform sampler3D voxelEmission;
 uniform int hasEmission;
-uniform int voxelShadows;
+uniform int voxelShadows; // raymarched occlusion (for lights without a shadow map)
+#ifdef VOXELGI_SHADOW_MAPS
+uniform sampler2DArrayShadow shadowMaps;
+uniform int shadowLayers[VOXELGI_MAX_LIGHTS];
+uniform mat4 shadowMatrices[VOXELGI_MAX_LIGHTS]; // grid -> the light's clip space
+#endif
 layout(rgba16f, binding = 0) uniform writeonly image3D radianceOut;
 layout(rgba16f, binding = 1) uniform writeonly image3D directOut;
 uniform int writeDirect;
@@ -36,6 +42,21 @@ float voxelShadow(vec3 p, vec3 side, vec3 toLight, float distance)
   }
   return transmittance;
 }
+
+#ifdef VOXELGI_SHADOW_MAPS
+// Filtered depth comparison in light l's map, from just off the voxel's lit side.
+float voxelShadowMap(int l, vec3 p, vec3 side, vec3 toLight)
+{
+  vec4 clip = shadowMatrices[l] * vec4(p + side + toLight, 1.0);
+  vec3 ndc = clip.xyz / clip.w;
+  if (clip.w <= 0.0 || any(greaterThan(abs(ndc), vec3(1.0))))
+  {
+    return 1.0; // outside the light's view: nothing there casts a shadow
+  }
+  vec3 uvz = ndc * 0.5 + 0.5;
+  return texture(shadowMaps, vec4(uvz.xy, float(shadowLayers[l]), uvz.z));
+}
+#endif
 
 // Normal-weighted attenuation: per dominant voxel face, weighted by the squared components
 // of the averaged voxel normal. Zero normals (opposing surfaces in one voxel) use half.
@@ -78,6 +99,12 @@ void main()
       }
       vec3 side = dot(n, n) < 0.25 ? toLight : (dot(n, toLight) >= 0.0 ? n : -n);
       float visibility = voxelShadows != 0 ? voxelShadow(p, side, toLight, distance) : 1.0;
+#ifdef VOXELGI_SHADOW_MAPS
+      if (shadowLayers[l] >= 0)
+      {
+        visibility = voxelShadowMap(l, p, side, toLight);
+      }
+#endif
       radiance += albedo.rgb * voxelLights[l].color.rgb * (attenuation * lambert * visibility);
     }
     result = vec4(min(radiance, vec3(maxHalf)), 1.0);

@@ -79,6 +79,16 @@ void ComputeProgram::SetVec3Array(const char* name, int count, const float* valu
   glUniform3fv(glGetUniformLocation(this->Handle, name), count, values);
 }
 
+void ComputeProgram::SetIntArray(const char* name, int count, const int* values)
+{
+  glUniform1iv(glGetUniformLocation(this->Handle, name), count, values);
+}
+
+void ComputeProgram::SetMat4Array(const char* name, int count, const float* values)
+{
+  glUniformMatrix4fv(glGetUniformLocation(this->Handle, name), count, GL_FALSE, values);
+}
+
 void ComputeProgram::BindUniformBlock(const char* block, unsigned int index)
 {
   const GLuint blockIndex = glGetUniformBlockIndex(this->Handle, block);
@@ -195,16 +205,6 @@ int Volume3D::BindSampler(vtkOpenGLRenderWindow* renWin) const
   return unit;
 }
 
-void Volume3D::UnbindSampler(vtkOpenGLRenderWindow* renWin, int unit)
-{
-  if (unit >= 0)
-  {
-    glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
-    glBindTexture(GL_TEXTURE_3D, 0);
-    renWin->GetTextureUnitManager()->Free(unit);
-  }
-}
-
 void Volume3D::Read(unsigned int format, unsigned int type, void* data) const
 {
   glBindTexture(GL_TEXTURE_3D, this->Handle);
@@ -231,18 +231,30 @@ SamplerBindings::~SamplerBindings()
 {
   for (int i = this->Count - 1; i >= 0; --i)
   {
-    Volume3D::UnbindSampler(this->Window, this->Units[i]);
+    glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(this->Units[i]));
+    glBindTexture(this->Targets[i], 0);
+    this->Window->GetTextureUnitManager()->Free(this->Units[i]);
   }
+}
+
+int SamplerBindings::Keep(int unit, unsigned int target)
+{
+  if (unit >= 0 && this->Count < 16)
+  {
+    this->Units[this->Count] = unit;
+    this->Targets[this->Count++] = target;
+  }
+  return unit;
 }
 
 int SamplerBindings::Add(const Volume3D& volume)
 {
-  const int unit = volume.BindSampler(this->Window);
-  if (unit >= 0 && this->Count < 16)
-  {
-    this->Units[this->Count++] = unit;
-  }
-  return unit;
+  return this->Keep(volume.BindSampler(this->Window), GL_TEXTURE_3D);
+}
+
+int SamplerBindings::Add(const ShadowMapArray& maps)
+{
+  return this->Keep(maps.BindSampler(this->Window), GL_TEXTURE_2D_ARRAY);
 }
 
 //------------------------------------------------------------------------------
@@ -305,6 +317,84 @@ void StorageBuffer::Release()
     this->Handle = 0;
   }
   this->ByteSize = 0;
+}
+
+//------------------------------------------------------------------------------
+ShadowMapArray::~ShadowMapArray()
+{
+  this->Release();
+}
+
+bool ShadowMapArray::Allocate(int size, int layers)
+{
+  if (this->Texture && this->Resolution == size && this->LayerCount == layers)
+  {
+    return true;
+  }
+  this->Release();
+  ClearErrors();
+  glGenTextures(1, &this->Texture);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, this->Texture);
+  glTexStorage3D(GL_TEXTURE_2D_ARRAY, 1, GL_DEPTH_COMPONENT32F, size, size, layers);
+  // Hardware percentage-closer filtering: linear filtering of the depth comparison.
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+  glGenFramebuffers(1, &this->Framebuffer);
+  if (glGetError() != GL_NO_ERROR)
+  {
+    this->Release();
+    return false;
+  }
+  this->Resolution = size;
+  this->LayerCount = layers;
+  return true;
+}
+
+unsigned int ShadowMapArray::PrepareLayer(int layer)
+{
+  GLint previous = 0;
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previous);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, this->Framebuffer);
+  glFramebufferTextureLayer(GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, this->Texture, 0, layer);
+  glDrawBuffer(GL_NONE);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(previous));
+  return this->Framebuffer;
+}
+
+int ShadowMapArray::BindSampler(vtkOpenGLRenderWindow* renWin) const
+{
+  const int unit = renWin->GetTextureUnitManager()->Allocate();
+  if (unit >= 0)
+  {
+    glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
+    glBindTexture(GL_TEXTURE_2D_ARRAY, this->Texture);
+  }
+  return unit;
+}
+
+std::size_t ShadowMapArray::Bytes() const
+{
+  return static_cast<std::size_t>(this->Resolution) * this->Resolution * this->LayerCount * 4;
+}
+
+void ShadowMapArray::Release()
+{
+  if (this->Texture)
+  {
+    glDeleteTextures(1, &this->Texture);
+    this->Texture = 0;
+  }
+  if (this->Framebuffer)
+  {
+    glDeleteFramebuffers(1, &this->Framebuffer);
+    this->Framebuffer = 0;
+  }
+  this->Resolution = this->LayerCount = 0;
 }
 
 //------------------------------------------------------------------------------

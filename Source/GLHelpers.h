@@ -35,6 +35,9 @@ public:
   void SetInt(const char* name, int value);
   void SetFloat(const char* name, float value);
   void SetVec3Array(const char* name, int count, const float* values);
+  void SetIntArray(const char* name, int count, const int* values);
+  /// Column-major 4x4 matrices.
+  void SetMat4Array(const char* name, int count, const float* values);
   /// Connect the program's uniform block `block` to uniform buffer binding `index`.
   void BindUniformBlock(const char* block, unsigned int index);
   /// Dispatch enough groups of `localSize`^3 to cover `n`^3 invocations, then unbind.
@@ -63,7 +66,6 @@ public:
   void GenerateMipmaps() const;
   /// Bind for sampling on a unit taken from the window's texture unit manager.
   int BindSampler(vtkOpenGLRenderWindow* renWin) const;
-  static void UnbindSampler(vtkOpenGLRenderWindow* renWin, int unit);
   /// Read level 0 back into `data`, which must hold Bytes() for the given format/type.
   void Read(unsigned int format, unsigned int type, void* data) const;
   std::size_t Bytes() const { return this->ByteSize; }
@@ -77,6 +79,8 @@ private:
   int LevelCount = 0;
   std::size_t ByteSize = 0;
 };
+
+class ShadowMapArray;
 
 /**
  * Sampler bindings for one draw or dispatch: each Add() takes a texture unit from the
@@ -95,10 +99,14 @@ public:
   SamplerBindings& operator=(const SamplerBindings&) = delete;
 
   int Add(const Volume3D& volume);
+  int Add(const ShadowMapArray& maps);
 
 private:
+  int Keep(int unit, unsigned int target);
+
   vtkOpenGLRenderWindow* Window;
   int Units[16];
+  unsigned int Targets[16];
   int Count = 0;
 };
 
@@ -123,6 +131,34 @@ public:
 private:
   unsigned int Handle = 0;
   std::size_t ByteSize = 0;
+};
+
+/**
+ * Depth-only layered shadow maps: a 2D array texture with depth comparison (for
+ * sampler2DArrayShadow) and a framebuffer to render one layer at a time.
+ */
+class ShadowMapArray
+{
+public:
+  ShadowMapArray() = default;
+  ~ShadowMapArray();
+  ShadowMapArray(const ShadowMapArray&) = delete;
+  ShadowMapArray& operator=(const ShadowMapArray&) = delete;
+
+  bool Allocate(int size, int layers);
+  /// Framebuffer name with `layer` attached as depth, to bind through vtkOpenGLState.
+  unsigned int PrepareLayer(int layer);
+  int BindSampler(vtkOpenGLRenderWindow* renWin) const;
+  int Size() const { return this->Resolution; }
+  int Layers() const { return this->LayerCount; }
+  std::size_t Bytes() const;
+  void Release();
+
+private:
+  unsigned int Texture = 0;
+  unsigned int Framebuffer = 0;
+  int Resolution = 0;
+  int LayerCount = 0;
 };
 
 /// A framebuffer without attachments: rasterization only, for image/buffer side effects.

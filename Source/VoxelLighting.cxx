@@ -1,6 +1,7 @@
 #include "VoxelLighting.h"
 
 #include "VoxelGIShaders.h"
+#include "ShadowMaps.h"
 #include "VoxelLights.h"
 #include "Voxelizer.h"
 
@@ -61,11 +62,6 @@ bool VoxelLighting::Prepare(int resolution, bool mipmapped, bool keepDirect, std
     return false;
   }
   std::string log;
-  if (!this->InjectProgram.IsReady() && !this->InjectProgram.Build("", shaders::inject_radiance_comp, log))
-  {
-    error = "voxel lighting shader failed to build: " + log;
-    return false;
-  }
   if (!this->BounceProgram.IsReady() &&
     !this->BounceProgram.Build("", shaders::inject_propagation_comp, log))
   {
@@ -75,8 +71,22 @@ bool VoxelLighting::Prepare(int resolution, bool mipmapped, bool keepDirect, std
   return true;
 }
 
-void VoxelLighting::Inject(vtkOpenGLRenderWindow* renWin, const Voxelizer& voxels, bool voxelShadows)
+bool VoxelLighting::Inject(vtkOpenGLRenderWindow* renWin, const Voxelizer& voxels,
+  bool voxelShadows, const ShadowMaps* shadowMaps, std::string& error)
 {
+  // The shadow-map variant is compiled only when a scene uses it.
+  const bool withMaps = shadowMaps && shadowMaps->Maps.Layers() > 0;
+  if (!this->InjectProgram.IsReady() || withMaps != this->InjectWithShadowMaps)
+  {
+    std::string log;
+    if (!this->InjectProgram.Build(withMaps ? "#define VOXELGI_SHADOW_MAPS\n" : "",
+          shaders::inject_radiance_comp, log))
+    {
+      error = "voxel lighting shader failed to build: " + log;
+      return false;
+    }
+    this->InjectWithShadowMaps = withMaps;
+  }
   SamplerBindings samplers(renWin);
   const int albedo = samplers.Add(voxels.AlbedoVolume);
   const int normal = samplers.Add(voxels.NormalVolume);
@@ -89,6 +99,12 @@ void VoxelLighting::Inject(vtkOpenGLRenderWindow* renWin, const Voxelizer& voxel
   p.SetInt("voxelEmission", emission);
   p.SetInt("hasEmission", voxels.HasEmission() ? 1 : 0);
   p.SetInt("voxelShadows", voxelShadows ? 1 : 0);
+  if (withMaps)
+  {
+    p.SetInt("shadowMaps", samplers.Add(shadowMaps->Maps));
+    p.SetIntArray("shadowLayers", ShadowMaps::MaxLights, shadowMaps->GetLayers());
+    p.SetMat4Array("shadowMatrices", ShadowMaps::MaxLights, shadowMaps->GetMatrices());
+  }
   const bool direct = this->Direct.IsAllocated();
   p.SetInt("writeDirect", direct ? 1 : 0);
   this->Radiance.BindImage(0, GL_WRITE_ONLY);
@@ -96,6 +112,7 @@ void VoxelLighting::Inject(vtkOpenGLRenderWindow* renWin, const Voxelizer& voxel
   (direct ? this->Direct : this->Radiance).BindImage(1, GL_WRITE_ONLY);
   p.DispatchCube(this->Radiance.Resolution(), LocalSize);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  return true;
 }
 
 void VoxelLighting::Bounce(vtkOpenGLRenderWindow* renWin, const Voxelizer& voxels,

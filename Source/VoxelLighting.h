@@ -15,6 +15,7 @@ class vtkOpenGLRenderWindow;
 
 namespace voxelgi
 {
+class ShadowMaps;
 class Voxelizer;
 class VoxelMipmap;
 
@@ -42,8 +43,10 @@ class VoxelLighting
 {
 public:
   bool Prepare(int resolution, bool mipmapped, bool keepDirect, std::string& error);
-  /// Direct light and emission into the radiance volume.
-  void Inject(vtkOpenGLRenderWindow* renWin, const Voxelizer& voxels, bool voxelShadows);
+  /// Direct light and emission into the radiance volume. `shadowMaps` (may be null) occlude
+  /// the lights that have one; `voxelShadows` raymarches for the others.
+  bool Inject(vtkOpenGLRenderWindow* renWin, const Voxelizer& voxels, bool voxelShadows,
+    const ShadowMaps* shadowMaps, std::string& error);
   /// One bounce of indirect diffuse light (needs the mipmaps of the current radiance).
   void Bounce(vtkOpenGLRenderWindow* renWin, const Voxelizer& voxels, const VoxelMipmap& mips,
     const ConeSettings& cones);
@@ -55,6 +58,7 @@ public:
 
 private:
   ComputeProgram InjectProgram;
+  bool InjectWithShadowMaps = false;
   ComputeProgram BounceProgram;
 };
 

@@ -18,6 +18,7 @@ bool VoxelLights::Gather(vtkRenderer* renderer, const VoxelGrid& grid, int& drop
   Block block{};
   int count = 0;
   dropped = 0;
+  this->Used.clear();
   vtkLightCollection* lights = renderer->GetLights();
   vtkCollectionSimpleIterator it;
   lights->InitTraversal(it);
@@ -33,6 +34,7 @@ bool VoxelLights::Gather(vtkRenderer* renderer, const VoxelGrid& grid, int& drop
       continue;
     }
     Light& l = block.Lights[count++];
+    this->Used.push_back(light);
     double position[3], focal[3];
     light->GetTransformedPosition(position);
     light->GetTransformedFocalPoint(focal);

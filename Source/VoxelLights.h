@@ -11,6 +11,7 @@
 #include <array>
 #include <vector>
 
+class vtkLight;
 class vtkRenderer;
 
 namespace voxelgi
@@ -29,6 +30,8 @@ public:
   /// Upload and bind to Binding.
   void Bind();
   int GetCount() const { return this->Count; }
+  /// The gathered lights, in block order.
+  const std::vector<vtkLight*>& GetLights() const { return this->Used; }
   void ReleaseGraphicsResources();
 
 private:
@@ -49,6 +52,7 @@ private:
   Block Uploaded{};
   bool HaveUploaded = false;
   int Count = 0;
+  std::vector<vtkLight*> Used;
   StorageBuffer Buffer;
 };
 

@@ -3,6 +3,7 @@
 #include "ConeTracer.h"
 #include "GBuffer.h"
 #include "GLHelpers.h"
+#include "ShadowMaps.h"
 #include "VoxelDebugView.h"
 #include "VoxelGrid.h"
 #include "VoxelLighting.h"
@@ -125,6 +126,7 @@ struct vtkVoxelGIPass::Internals
   voxelgi::Voxelizer Voxels;
   voxelgi::VoxelLights Lights;
   voxelgi::VoxelLighting Lighting;
+  voxelgi::ShadowMaps Shadows;
   voxelgi::VoxelMipmap Mipmap;
   voxelgi::ConeSettings Cones;
   voxelgi::GBuffer Frame;
@@ -266,7 +268,7 @@ double vtkVoxelGIPass::GetStageTime(int stage) const
 const char* vtkVoxelGIPass::GetStageName(int stage)
 {
   static const char* names[NUMBER_OF_STAGES] = { "Clear", "VoxelizeStatic", "VoxelizeDynamic",
-    "Resolve", "LightVoxels", "Mipmap", "Bounce", "GBuffer", "ConeTrace", "DebugView" };
+    "Resolve", "ShadowMaps", "LightVoxels", "Mipmap", "Bounce", "GBuffer", "ConeTrace", "DebugView" };
   return (stage >= 0 && stage < NUMBER_OF_STAGES) ? names[stage] : "Unknown";
 }
 
@@ -296,7 +298,8 @@ bool vtkVoxelGIPass::GetUsedHardwareConservativeRaster() const
 unsigned long long vtkVoxelGIPass::GetVoxelMemoryBytes() const
 {
   const Internals& in = *this->Internal;
-  return in.Voxels.MemoryBytes() + in.Lighting.MemoryBytes() + in.Mipmap.MemoryBytes();
+  return in.Voxels.MemoryBytes() + in.Lighting.MemoryBytes() + in.Mipmap.MemoryBytes() +
+    in.Shadows.Maps.Bytes();
 }
 
 //------------------------------------------------------------------------------
@@ -579,7 +582,8 @@ bool vtkVoxelGIPass::UpdateRadiance(vtkRenderer* renderer, bool voxelsChanged)
 
   const double maxDistance = this->MaxTraceDistance * in.Grid.Resolution;
   in.Cones.Set(this->DiffuseConeCount, this->DiffuseConeAperture, this->ConeStepFactor, maxDistance);
-  const std::vector<double> settings{ static_cast<double>(this->VoxelShadows),
+  const std::vector<double> settings{ static_cast<double>(this->LightOcclusion),
+    static_cast<double>(this->ShadowMapResolution),
     static_cast<double>(this->Bounces), static_cast<double>(this->AnisotropicMipmaps),
     static_cast<double>(this->DiffuseConeCount), this->DiffuseConeAperture, this->ConeStepFactor,
     maxDistance };
@@ -598,9 +602,39 @@ bool vtkVoxelGIPass::UpdateRadiance(vtkRenderer* renderer, bool voxelsChanged)
     in.RadianceValid = false;
     return false;
   }
+  const voxelgi::ShadowMaps* shadowMaps = nullptr;
+  if (this->LightOcclusion == LIGHT_OCCLUSION_SHADOW_MAPS)
+  {
+    in.BeginStage(STAGE_SHADOW_MAPS, timed);
+    std::vector<vtkProp*> casters;
+    for (const ActorRecord& record : in.Records)
+    {
+      casters.push_back(record.Actor);
+    }
+    if (!in.Shadows.Render(renderer, in.Lights.GetLights(), casters, in.Grid,
+          this->ShadowMapResolution, error))
+    {
+      vtkErrorMacro(<< "Voxel GI disabled for this frame: " << error << ".");
+      in.RadianceValid = false;
+      return false;
+    }
+    in.EndStage(STAGE_SHADOW_MAPS, timed);
+    shadowMaps = &in.Shadows;
+  }
+  else
+  {
+    in.Shadows.ReleaseGraphicsResources();
+  }
   in.BeginStage(STAGE_LIGHT, timed);
-  in.Lighting.Inject(renWin, in.Voxels, this->VoxelShadows != 0);
+  const bool injected = in.Lighting.Inject(renWin, in.Voxels,
+    this->LightOcclusion != LIGHT_OCCLUSION_NONE, shadowMaps, error);
   in.EndStage(STAGE_LIGHT, timed);
+  if (!injected)
+  {
+    vtkErrorMacro(<< "Voxel GI disabled for this frame: " << error << ".");
+    in.RadianceValid = false;
+    return false;
+  }
   in.BeginStage(STAGE_MIPMAP, timed);
   in.Mipmap.Build(renWin, in.Lighting.Radiance);
   in.EndStage(STAGE_MIPMAP, timed);
@@ -963,6 +997,7 @@ void vtkVoxelGIPass::ReleaseGraphicsResources(vtkWindow* w)
   in.Voxels.ReleaseGraphicsResources();
   in.Lights.ReleaseGraphicsResources();
   in.Lighting.ReleaseGraphicsResources();
+  in.Shadows.ReleaseGraphicsResources();
   in.Mipmap.ReleaseGraphicsResources();
   in.Frame.ReleaseGraphicsResources(w);
   in.Tracer.ReleaseGraphicsResources(w);
@@ -1004,7 +1039,8 @@ void vtkVoxelGIPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "AutoDynamic: " << this->AutoDynamic << "\n";
   os << indent << "HardwareConservativeRaster: " << this->HardwareConservativeRaster << "\n";
   os << indent << "TimeStages: " << this->TimeStages << "\n";
-  os << indent << "VoxelShadows: " << this->VoxelShadows << "\n";
+  os << indent << "LightOcclusion: " << this->LightOcclusion << "\n";
+  os << indent << "ShadowMapResolution: " << this->ShadowMapResolution << "\n";
   os << indent << "Bounces: " << this->Bounces << "\n";
   os << indent << "AnisotropicMipmaps: " << this->AnisotropicMipmaps << "\n";
   os << indent << "DiffuseConeCount: " << this->DiffuseConeCount << "\n";

@@ -136,14 +136,34 @@ public:
   void SetDebugViewToAmbientOcclusion() { this->SetDebugView(DEBUG_VIEW_AMBIENT_OCCLUSION); }
   ///@}
 
+  enum LightOcclusionModes
+  {
+    LIGHT_OCCLUSION_NONE = 0,
+    LIGHT_OCCLUSION_VOXEL_SHADOWS = 1,
+    LIGHT_OCCLUSION_SHADOW_MAPS = 2
+  };
+
   ///@{
   /**
-   * Soft voxel shadows in the voxel lighting: each voxel marches toward every light through
-   * the occupancy. Off, every voxel facing a light is lit. Default: on.
+   * How the voxel lighting finds what the lights do not reach. VOXEL_SHADOWS: each voxel
+   * marches toward every light through the voxel occupancy (soft voxel shadows).
+   * SHADOW_MAPS: directional and spot lights render a depth map from the geometry
+   * (ShadowMapResolution), sharper than the voxels; point lights still raymarch. NONE: every
+   * voxel facing a light is lit. Default: LIGHT_OCCLUSION_VOXEL_SHADOWS.
    */
-  vtkSetMacro(VoxelShadows, vtkTypeBool);
-  vtkGetMacro(VoxelShadows, vtkTypeBool);
-  vtkBooleanMacro(VoxelShadows, vtkTypeBool);
+  vtkSetClampMacro(LightOcclusion, int, LIGHT_OCCLUSION_NONE, LIGHT_OCCLUSION_SHADOW_MAPS);
+  vtkGetMacro(LightOcclusion, int);
+  void SetLightOcclusionToNone() { this->SetLightOcclusion(LIGHT_OCCLUSION_NONE); }
+  void SetLightOcclusionToVoxelShadows() { this->SetLightOcclusion(LIGHT_OCCLUSION_VOXEL_SHADOWS); }
+  void SetLightOcclusionToShadowMaps() { this->SetLightOcclusion(LIGHT_OCCLUSION_SHADOW_MAPS); }
+  ///@}
+
+  ///@{
+  /**
+   * Size of each shadow map in texels, in [128, 4096]. Default: 1024.
+   */
+  vtkSetClampMacro(ShadowMapResolution, int, 128, 4096);
+  vtkGetMacro(ShadowMapResolution, int);
   ///@}
 
   ///@{
@@ -326,6 +346,7 @@ public:
     STAGE_VOXELIZE_STATIC,
     STAGE_VOXELIZE_DYNAMIC,
     STAGE_RESOLVE,
+    STAGE_SHADOW_MAPS,
     STAGE_LIGHT,
     STAGE_MIPMAP,
     STAGE_BOUNCE,
@@ -426,7 +447,8 @@ protected:
   vtkTypeBool AutoDynamic = 1;
   vtkTypeBool HardwareConservativeRaster = 1;
   vtkTypeBool TimeStages = 0;
-  vtkTypeBool VoxelShadows = 1;
+  int LightOcclusion = LIGHT_OCCLUSION_VOXEL_SHADOWS;
+  int ShadowMapResolution = 1024;
   int Bounces = 1;
   vtkTypeBool AnisotropicMipmaps = 1;
   int DiffuseConeCount = 6;

@@ -1,5 +1,6 @@
 // Renders the built-in Cornell box with voxel GI on and writes the images:
-//   VoxelGIDemo [output-prefix]   ->  <prefix>.png (shaded) and <prefix>-voxels.png (voxel albedo)
+//   VoxelGIDemo [output-prefix]   ->  <prefix>.png (GI), <prefix>-plain.png (VTK without GI)
+//                                     and <prefix>-voxels.png (voxel albedo view)
 #include "vtkVoxelGIPass.h"
 #include "vtkVoxelGIScenes.h"
 
@@ -50,10 +51,15 @@ int main(int argc, char* argv[])
     return EXIT_FAILURE;
   }
   WritePNG(window, prefix + ".png");
+  gi->Print(std::cout);
 
   gi->SetDebugViewToVoxelAlbedo();
   window->Render();
   WritePNG(window, prefix + "-voxels.png");
-  gi->Print(std::cout);
+
+  gi->SetDebugViewToNone();
+  gi->EnabledOff();
+  window->Render();
+  WritePNG(window, prefix + "-plain.png");
   return EXIT_SUCCESS;
 }

@@ -2,12 +2,15 @@
 //  1. a lit plane alone: no indirect light and no occlusion (it sees nothing but the sky);
 //  2. a closed box with uniform emission E and albedo rho (the furnace): the voxel radiance
 //     grows with the bounces toward the analytic E / (1 - rho) and never exceeds it;
-//  3. direct voxel light on a plane from a positional light: Lambert x VTK's attenuation.
+//  3. direct voxel light on a plane from a positional light: Lambert x VTK's attenuation;
+//  4. a block floating over a floor under a directional light: the floor in its shadow gets
+//     no direct light, with voxel shadows and with shadow maps alike.
 #include "VoxelGITestUtilities.h"
 #include "vtkVoxelGIPass.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkCubeSource.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
@@ -183,12 +186,56 @@ int DirectLightOnPlane()
   VOXELGI_CHECK(worst < 0.005, "voxel direct light differs from Lambert x attenuation");
   return EXIT_SUCCESS;
 }
+
+int ShadowedFloor()
+{
+  vtkNew<vtkRenderer> renderer;
+  voxelgi_test::AddQuad(renderer, dvec3(-3, 0, -3), dvec3(-3, 0, 3), dvec3(3, 0, -3), 0.8, 0.8, 0.8);
+  vtkNew<vtkCubeSource> cube;
+  cube->SetBounds(-1.0, 1.0, 1.5, 2.0, -1.0, 1.0);
+  voxelgi_test::AddActor(renderer, cube, 0.8, 0.8, 0.8);
+  vtkNew<vtkLight> sun; // straight down
+  sun->SetLightTypeToSceneLight();
+  sun->SetPositional(false);
+  sun->SetPosition(0.0, 5.0, 0.0);
+  sun->SetFocalPoint(0.0, 0.0, 0.0);
+  renderer->AddLight(sun);
+  vtkNew<vtkRenderWindow> window;
+  window->SetSize(64, 64);
+  window->AddRenderer(renderer);
+  vtkNew<vtkVoxelGIPass> gi;
+  gi->SetVoxelResolution(64);
+  gi->SetBounces(0);
+  renderer->SetPass(gi);
+  renderer->ResetCamera();
+  for (int mode : { vtkVoxelGIPass::LIGHT_OCCLUSION_VOXEL_SHADOWS,
+         vtkVoxelGIPass::LIGHT_OCCLUSION_SHADOW_MAPS })
+  {
+    gi->SetLightOcclusion(mode);
+    window->Render();
+    VOXELGI_CHECK(gi->GetGIActive(), "GI did not run");
+    VOXELGI_CHECK(gi->GetStageRan(vtkVoxelGIPass::STAGE_SHADOW_MAPS) ==
+        (mode == vtkVoxelGIPass::LIGHT_OCCLUSION_SHADOW_MAPS),
+      "shadow maps rendered when not asked for, or not when asked for");
+    vtkNew<vtkImageData> radiance;
+    VOXELGI_CHECK(gi->GetVoxelVolume(vtkVoxelGIPass::VOLUME_RADIANCE, radiance), "no radiance");
+    vtkDataArray* values = radiance->GetPointData()->GetScalars();
+    const double shadowed = values->GetComponent(radiance->FindPoint(0.3, 0.01, -0.2), 0);
+    const double lit = values->GetComponent(radiance->FindPoint(2.5, 0.01, 2.0), 0);
+    std::cout << (mode == vtkVoxelGIPass::LIGHT_OCCLUSION_SHADOW_MAPS ? "shadow maps" : "voxel shadows")
+              << ": floor radiance in the shadow " << shadowed << ", in the light " << lit
+              << " (Lambert: 0.8)" << std::endl;
+    VOXELGI_CHECK(std::abs(lit - 0.8) < 0.01, "lit floor differs from Lambert");
+    VOXELGI_CHECK(shadowed < 0.01, "light through the block");
+  }
+  return EXIT_SUCCESS;
+}
 }
 
 int TestGINumerics(int, char*[])
 {
   if (LitPlaneAlone() != EXIT_SUCCESS || Furnace() != EXIT_SUCCESS ||
-    DirectLightOnPlane() != EXIT_SUCCESS)
+    DirectLightOnPlane() != EXIT_SUCCESS || ShadowedFloor() != EXIT_SUCCESS)
   {
     return EXIT_FAILURE;
   }
