@@ -1,0 +1,75 @@
+"""Interactive voxel GI on the Cornell box. Keys:
+    g  GI on/off            o  ambient occlusion on/off     s  specular cone on/off
+    v  next debug view      b  bounces 0/1/2                q  quit
+
+    python3 interactive.py              # opens a window
+    python3 interactive.py --snapshot out.png   # renders once off screen, writes the image
+"""
+import sys
+
+from vtkmodules.vtkInteractionStyle import vtkInteractorStyleTrackballCamera
+from vtkmodules.vtkIOImage import vtkPNGWriter
+from vtkmodules.vtkRenderingCore import (vtkRenderer, vtkRenderWindow,
+                                         vtkRenderWindowInteractor, vtkWindowToImageFilter)
+
+from voxelgi import vtkVoxelGIPass, vtkVoxelGIScenes
+
+VIEWS = ["None", "VoxelAlbedo", "VoxelNormal", "VoxelEmission", "VoxelRadiance", "Direct",
+         "Indirect", "AmbientOcclusion"]
+
+
+def on_key(interactor, gi, window):
+    key = interactor.GetKeySym()
+    if key == "g":
+        gi.SetEnabled(not gi.GetEnabled())
+    elif key == "o":
+        gi.SetAmbientOcclusionStrength(0.0 if gi.GetAmbientOcclusionStrength() > 0 else 0.5)
+    elif key == "s":
+        gi.SetSpecularCone(not gi.GetSpecularCone())
+    elif key == "v":
+        gi.SetDebugView((gi.GetDebugView() + 1) % len(VIEWS))
+    elif key == "b":
+        gi.SetBounces((gi.GetBounces() + 1) % 3)
+    else:
+        return
+    print("GI %s, AO %.1f, specular %s, bounces %d, view %s" % (
+        "on" if gi.GetEnabled() else "off", gi.GetAmbientOcclusionStrength(),
+        "on" if gi.GetSpecularCone() else "off", gi.GetBounces(), VIEWS[gi.GetDebugView()]))
+    window.Render()
+
+
+def main(argv):
+    renderer = vtkRenderer()
+    vtkVoxelGIScenes.AddCornellBox(renderer)
+    window = vtkRenderWindow()
+    window.SetSize(600, 600)
+    window.AddRenderer(renderer)
+    gi = vtkVoxelGIPass()
+    gi.SetVoxelResolution(64)
+    renderer.SetPass(gi)
+
+    if len(argv) == 2 and argv[0] == "--snapshot":
+        window.SetOffScreenRendering(True)
+        window.SetSize(300, 300)
+        gi.SetDebugViewToIndirect()
+        window.Render()
+        grab = vtkWindowToImageFilter()
+        grab.SetInput(window)
+        grab.ReadFrontBufferOff()
+        writer = vtkPNGWriter()
+        writer.SetInputConnection(grab.GetOutputPort())
+        writer.SetFileName(argv[1])
+        writer.Write()
+        return
+
+    interactor = vtkRenderWindowInteractor()
+    interactor.SetRenderWindow(window)
+    interactor.SetInteractorStyle(vtkInteractorStyleTrackballCamera())
+    interactor.AddObserver("KeyPressEvent", lambda obj, event: on_key(obj, gi, window))
+    print(__doc__)
+    window.Render()
+    interactor.Start()
+
+
+if __name__ == "__main__":
+    main(sys.argv[1:])
