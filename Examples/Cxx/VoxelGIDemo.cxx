@@ -1,10 +1,13 @@
 // Renders the built-in Cornell box with voxel GI on and writes the images:
-//   VoxelGIDemo [output-prefix]   ->  <prefix>.png (GI), <prefix>-plain.png (VTK without GI)
-//                                     and <prefix>-voxels.png (voxel albedo view)
+//   VoxelGIDemo [output-prefix] [--egl]  ->  <prefix>.png (GI), <prefix>-plain.png (VTK
+//                                            without GI) and <prefix>-voxels.png (voxels)
+// --egl renders headless through EGL (GPU machines without an X server).
+#include "vtkVoxelGIEGLRenderWindow.h"
 #include "vtkVoxelGIPass.h"
 #include "vtkVoxelGIScenes.h"
 
 #include "vtkNew.h"
+#include "vtkSmartPointer.h"
 #include "vtkPNGWriter.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -30,11 +33,26 @@ void WritePNG(vtkRenderWindow* window, const std::string& path)
 
 int main(int argc, char* argv[])
 {
-  const std::string prefix = argc > 1 ? argv[1] : "voxelgi-demo";
+  std::string prefix = "voxelgi-demo";
+  bool egl = false;
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    if (arg == "--egl")
+    {
+      egl = true;
+    }
+    else
+    {
+      prefix = arg;
+    }
+  }
 
   vtkNew<vtkRenderer> renderer;
   vtkVoxelGIScenes::AddCornellBox(renderer);
-  vtkNew<vtkRenderWindow> window;
+  vtkSmartPointer<vtkRenderWindow> window = egl
+    ? vtkSmartPointer<vtkRenderWindow>(vtkSmartPointer<vtkVoxelGIEGLRenderWindow>::New())
+    : vtkSmartPointer<vtkRenderWindow>::New();
   window->SetSize(640, 640);
   window->SetOffScreenRendering(true);
   window->AddRenderer(renderer);

@@ -1,5 +1,6 @@
 #include "VoxelGITestUtilities.h"
 
+#include "vtkVoxelGIEGLRenderWindow.h"
 #include "vtkVoxelGIPass.h"
 #include "vtkVoxelGIScenes.h"
 
@@ -16,11 +17,53 @@
 #include "vtkRegressionTestImage.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkObjectFactory.h"
 #include "vtkTesting.h"
+#include "vtkVersionMacros.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+
+namespace
+{
+// With VOXELGI_EGL set, every vtkRenderWindow the tests create is a headless EGL window, so
+// the same tests run on GPU machines without an X server.
+class EGLWindowFactory : public vtkObjectFactory
+{
+public:
+  static EGLWindowFactory* New()
+  {
+    auto* factory = new EGLWindowFactory;
+    factory->InitializeObjectBase();
+    return factory;
+  }
+  const char* GetVTKSourceVersion() override { return VTK_SOURCE_VERSION; }
+  const char* GetDescription() override { return "VoxelGI tests: headless EGL windows"; }
+
+private:
+  EGLWindowFactory()
+  {
+    this->RegisterOverride("vtkRenderWindow", "vtkVoxelGIEGLRenderWindow", "EGL window", 1,
+      []() -> vtkObject* { return vtkVoxelGIEGLRenderWindow::New(); });
+  }
+};
+
+struct EGLWindowRegistration
+{
+  EGLWindowRegistration()
+  {
+    if (std::getenv("VOXELGI_EGL"))
+    {
+      auto* factory = EGLWindowFactory::New();
+      vtkObjectFactory::RegisterFactory(factory);
+      factory->Delete();
+      vtkObjectFactory::SetAllEnableFlags(0, "vtkRenderWindow");
+      vtkObjectFactory::SetAllEnableFlags(1, "vtkRenderWindow", "vtkVoxelGIEGLRenderWindow");
+    }
+  }
+} eglWindowRegistration;
+}
 
 namespace voxelgi_test
 {
