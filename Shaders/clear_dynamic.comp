@@ -20,17 +20,17 @@ void main()
     return;
   }
   int i = voxelIndex(v);
-  voxelAccum[VOXEL_COUNT].value[i] = 0u;
-  voxelAccum[VOXEL_ALBEDO].value[i] = 0u;
-  voxelAccum[VOXEL_ALBEDO + 1].value[i] = 0u;
-  voxelAccum[VOXEL_ALBEDO + 2].value[i] = 0u;
-  voxelAccum[VOXEL_NORMAL].value[i] = 0u;
-  voxelAccum[VOXEL_NORMAL + 1].value[i] = 0u;
-  voxelAccum[VOXEL_NORMAL + 2].value[i] = 0u;
+  voxelCount[i] = 0u;
+  voxelAlbedoR[i] = 0u;
+  voxelAlbedoG[i] = 0u;
+  voxelAlbedoB[i] = 0u;
+  voxelNormalX[i] = 0u;
+  voxelNormalY[i] = 0u;
+  voxelNormalZ[i] = 0u;
 #if VOXEL_CHANNELS > 7
-  voxelAccum[VOXEL_EMISSION].value[i] = 0u;
-  voxelAccum[VOXEL_EMISSION + 1].value[i] = 0u;
-  voxelAccum[VOXEL_EMISSION + 2].value[i] = 0u;
+  voxelEmissionR[i] = 0u;
+  voxelEmissionG[i] = 0u;
+  voxelEmissionB[i] = 0u;
 #endif
   if (clearStatic != 0)
   {

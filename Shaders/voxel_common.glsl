@@ -4,15 +4,20 @@
 // Voxelization accumulates exact integer sums of 8-bit quantized values, one uint per voxel
 // and channel, so the mean stays exact up to 2^32 / 255 (16.8 million) fragments per voxel
 // instead of overflowing at 255 as a packed RGBA8 running average would.
-#define VOXEL_COUNT 0
-#define VOXEL_ALBEDO 1
-#define VOXEL_NORMAL 4
-#define VOXEL_EMISSION 7
-
-layout(std430, binding = 0) buffer VoxelAccumulator
-{
-  uint value[];
-} voxelAccum[VOXEL_CHANNELS];
+// One buffer per channel, bound at consecutive points in this order; separate blocks rather
+// than an array of blocks, which some compilers only index by literal constants.
+layout(std430, binding = 0) buffer VoxelCountBuffer { uint voxelCount[]; };
+layout(std430, binding = 1) buffer VoxelAlbedoRBuffer { uint voxelAlbedoR[]; };
+layout(std430, binding = 2) buffer VoxelAlbedoGBuffer { uint voxelAlbedoG[]; };
+layout(std430, binding = 3) buffer VoxelAlbedoBBuffer { uint voxelAlbedoB[]; };
+layout(std430, binding = 4) buffer VoxelNormalXBuffer { uint voxelNormalX[]; };
+layout(std430, binding = 5) buffer VoxelNormalYBuffer { uint voxelNormalY[]; };
+layout(std430, binding = 6) buffer VoxelNormalZBuffer { uint voxelNormalZ[]; };
+#if VOXEL_CHANNELS > 7
+layout(std430, binding = 7) buffer VoxelEmissionRBuffer { uint voxelEmissionR[]; };
+layout(std430, binding = 8) buffer VoxelEmissionGBuffer { uint voxelEmissionG[]; };
+layout(std430, binding = 9) buffer VoxelEmissionBBuffer { uint voxelEmissionB[]; };
+#endif
 
 uniform int voxelResolution;
 
@@ -27,7 +32,8 @@ uint voxelQuantize(float v)
   return uint(clamp((isnan(v) || isinf(v)) ? 0.0 : v, 0.0, 1.0) * 255.0 + 0.5);
 }
 
-// Mean of three consecutive channels; a macro because block array indices must be constant.
-#define VOXEL_MEAN(index, channel, count)                                                        \
-  (vec3(float(voxelAccum[channel].value[index]), float(voxelAccum[channel + 1].value[index]),     \
-     float(voxelAccum[channel + 2].value[index])) / (255.0 * (count)))
+// Mean of three channel sums over `count` fragments.
+vec3 voxelMean(uint r, uint g, uint b, float count)
+{
+  return vec3(float(r), float(g), float(b)) / (255.0 * count);
+}

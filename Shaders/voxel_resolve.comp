@@ -22,19 +22,19 @@ void main()
     return;
   }
   int i = voxelIndex(v);
-  uint count = voxelAccum[VOXEL_COUNT].value[i];
+  uint count = voxelCount[i];
   vec4 albedo = vec4(0.0);
   vec4 normal = vec4(0.5, 0.5, 0.5, 0.0);
   vec3 emission = vec3(0.0);
   if (count > 0u)
   {
     float n = float(count);
-    albedo = vec4(VOXEL_MEAN(i, VOXEL_ALBEDO, n), 1.0);
-    vec3 m = VOXEL_MEAN(i, VOXEL_NORMAL, n) * 2.0 - 1.0;
+    albedo = vec4(voxelMean(voxelAlbedoR[i], voxelAlbedoG[i], voxelAlbedoB[i], n), 1.0);
+    vec3 m = voxelMean(voxelNormalX[i], voxelNormalY[i], voxelNormalZ[i], n) * 2.0 - 1.0;
     float len = length(m);
     normal = vec4((len > 1e-3 ? m / len : vec3(0.0)) * 0.5 + 0.5, 1.0);
 #if VOXEL_CHANNELS > 7
-    emission = min(VOXEL_MEAN(i, VOXEL_EMISSION, n) * emissionScale, vec3(maxHalf));
+    emission = min(voxelMean(voxelEmissionR[i], voxelEmissionG[i], voxelEmissionB[i], n) * emissionScale, vec3(maxHalf));
 #endif
   }
   imageStore(voxelAlbedo, v, albedo);

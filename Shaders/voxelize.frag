@@ -40,17 +40,17 @@ void voxelStore(ivec3 v, vec4 color)
   }
   int i = voxelIndex(v);
   vec3 n = voxelFaceNormal * 0.5 + 0.5;
-  atomicAdd(voxelAccum[VOXEL_COUNT].value[i], 1u);
-  atomicAdd(voxelAccum[VOXEL_ALBEDO].value[i], voxelQuantize(color.r));
-  atomicAdd(voxelAccum[VOXEL_ALBEDO + 1].value[i], voxelQuantize(color.g));
-  atomicAdd(voxelAccum[VOXEL_ALBEDO + 2].value[i], voxelQuantize(color.b));
-  atomicAdd(voxelAccum[VOXEL_NORMAL].value[i], voxelQuantize(n.x));
-  atomicAdd(voxelAccum[VOXEL_NORMAL + 1].value[i], voxelQuantize(n.y));
-  atomicAdd(voxelAccum[VOXEL_NORMAL + 2].value[i], voxelQuantize(n.z));
+  atomicAdd(voxelCount[i], 1u);
+  atomicAdd(voxelAlbedoR[i], voxelQuantize(color.r));
+  atomicAdd(voxelAlbedoG[i], voxelQuantize(color.g));
+  atomicAdd(voxelAlbedoB[i], voxelQuantize(color.b));
+  atomicAdd(voxelNormalX[i], voxelQuantize(n.x));
+  atomicAdd(voxelNormalY[i], voxelQuantize(n.y));
+  atomicAdd(voxelNormalZ[i], voxelQuantize(n.z));
 #if VOXEL_CHANNELS > 7
-  atomicAdd(voxelAccum[VOXEL_EMISSION].value[i], voxelQuantize(voxelEmission.r));
-  atomicAdd(voxelAccum[VOXEL_EMISSION + 1].value[i], voxelQuantize(voxelEmission.g));
-  atomicAdd(voxelAccum[VOXEL_EMISSION + 2].value[i], voxelQuantize(voxelEmission.b));
+  atomicAdd(voxelEmissionR[i], voxelQuantize(voxelEmission.r));
+  atomicAdd(voxelEmissionG[i], voxelQuantize(voxelEmission.g));
+  atomicAdd(voxelEmissionB[i], voxelQuantize(voxelEmission.b));
 #endif
 }
 

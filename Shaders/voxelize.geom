@@ -134,7 +134,7 @@ void main()
   voxelEdge2 = edges[2];
   voxelFaceNormal = n / length(n);
 
-  vec2 corners[4];
+  vec2 corners[4] = vec2[4](vec2(0.0), vec2(0.0), vec2(0.0), vec2(0.0));
   int count = 3;
   if (useTriangle)
   {
