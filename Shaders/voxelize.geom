@@ -5,10 +5,13 @@
 // renders with an orthographic camera fitted to the grid). Each triangle is projected along
 // its dominant axis, then dilated for conservative rasterization (Hasselgren et al., GPU Gems 2
 // ch. 42): every edge moves out by the pixel's half diagonal along its normal. Where the
-// dilated vertices run away (very acute angles) the triangle's bounding rectangle is emitted
-// instead. The fragment stage clips against the exact triangle, so both shapes are correct.
-// Where the GPU rasterizes conservatively itself (GL_NV_conservative_raster), the triangle is
-// emitted as it is.
+// dilated vertices run away (very acute angles) a triangle enclosing the bounding rectangle
+// (grown by half a pixel) is emitted instead: one primitive, so no pixel is covered twice even
+// by a conservative rasterizer. The fragment stage clips against the exact triangle, so both
+// shapes are correct.
+// Where the GPU rasterizes conservatively itself (GL_NV_conservative_raster), well-shaped
+// triangles are emitted as they are; slivers, which the hardware may cull as degenerate, still
+// get the enclosing triangle.
 //
 // VTK fills the //VTK:: tags below with its varyings written as `xVSOutput[i]`; the pass
 // rewrites those into barycentric blends so attributes stay exact on the dilated shape.
@@ -25,7 +28,7 @@
 //VTK::Output::Dec
 
 layout(triangles) in;
-layout(triangle_strip, max_vertices = 4) out;
+layout(triangle_strip, max_vertices = 3) out;
 
 uniform int voxelResolution;
 uniform int voxelDilate;       // 0 when the hardware rasterizes conservatively
@@ -113,13 +116,12 @@ void main()
 
   vec2 dilated[3];
   bool useTriangle = true;
-  bool dilate = voxelDilate != 0;
   for (int k = 0; k < 3; ++k)
   {
     vec3 h = cross(lines[(k + 2) % 3], lines[k]);
-    dilated[k] = dilate ? h.xy / h.z : v[k];
-    if (dilate && (!(abs(h.z) > 1e-12) || any(lessThan(dilated[k], bmin - 1.0)) ||
-      any(greaterThan(dilated[k], bmax + 1.0))))
+    dilated[k] = voxelDilate != 0 ? h.xy / h.z : v[k];
+    if (!(abs(h.z) > 1e-12) || any(lessThan(h.xy / h.z, bmin - 1.0)) ||
+      any(greaterThan(h.xy / h.z, bmax + 1.0)))
     {
       useTriangle = false;
     }
@@ -134,8 +136,7 @@ void main()
   voxelEdge2 = edges[2];
   voxelFaceNormal = n / length(n);
 
-  vec2 corners[4] = vec2[4](vec2(0.0), vec2(0.0), vec2(0.0), vec2(0.0));
-  int count = 3;
+  vec2 corners[3];
   if (useTriangle)
   {
     corners[0] = dilated[0];
@@ -144,16 +145,15 @@ void main()
   }
   else
   {
+    // Right triangle with legs of twice the grown rectangle: contains it with margin.
     vec2 lo = bmin - 0.501;
-    vec2 hi = bmax + 0.501;
+    vec2 size = 2.0 * (bmax + 0.501 - lo) + 1.0;
     corners[0] = lo;
-    corners[1] = vec2(hi.x, lo.y);
-    corners[2] = vec2(lo.x, hi.y);
-    corners[3] = hi;
-    count = 4;
+    corners[1] = lo + vec2(size.x, 0.0);
+    corners[2] = lo + vec2(0.0, size.y);
   }
 
-  for (int j = 0; j < count; ++j)
+  for (int j = 0; j < 3; ++j)
   {
     vec2 c = corners[j];
     // Barycentric weights of c with respect to the original (unordered) triangle.
