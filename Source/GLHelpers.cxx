@@ -441,16 +441,16 @@ StageTimer::~StageTimer()
 
 void StageTimer::Begin()
 {
-  if (!this->Query)
+  if (!this->Queries[0])
   {
-    glGenQueries(1, &this->Query);
+    glGenQueries(2, this->Queries);
   }
-  glBeginQuery(GL_TIME_ELAPSED, this->Query);
+  glQueryCounter(this->Queries[0], GL_TIMESTAMP);
 }
 
 void StageTimer::End()
 {
-  glEndQuery(GL_TIME_ELAPSED);
+  glQueryCounter(this->Queries[1], GL_TIMESTAMP);
   this->Pending = true;
 }
 
@@ -460,18 +460,19 @@ double StageTimer::Milliseconds()
   {
     return 0.0;
   }
-  GLuint64 ns = 0;
-  glGetQueryObjectui64v(this->Query, GL_QUERY_RESULT, &ns);
+  GLuint64 begin = 0, end = 0;
+  glGetQueryObjectui64v(this->Queries[0], GL_QUERY_RESULT, &begin);
+  glGetQueryObjectui64v(this->Queries[1], GL_QUERY_RESULT, &end);
   this->Pending = false;
-  return static_cast<double>(ns) * 1e-6;
+  return end > begin ? static_cast<double>(end - begin) * 1e-6 : 0.0;
 }
 
 void StageTimer::Release()
 {
-  if (this->Query)
+  if (this->Queries[0])
   {
-    glDeleteQueries(1, &this->Query);
-    this->Query = 0;
+    glDeleteQueries(2, this->Queries);
+    this->Queries[0] = this->Queries[1] = 0;
   }
   this->Pending = false;
 }

@@ -180,7 +180,8 @@ private:
   int Height = 0;
 };
 
-/// A GL_TIME_ELAPSED query around one stage.
+/// GPU time of one stage: a pair of GL_TIMESTAMP queries around it (timestamps, unlike
+/// GL_TIME_ELAPSED, also work when stages nest).
 class StageTimer
 {
 public:
@@ -196,7 +197,7 @@ public:
   void Release();
 
 private:
-  unsigned int Query = 0;
+  unsigned int Queries[2] = { 0, 0 };
   bool Pending = false;
 };
 

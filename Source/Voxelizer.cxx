@@ -202,6 +202,16 @@ std::size_t Voxelizer::MemoryBytes() const
   return bytes;
 }
 
+std::size_t Voxelizer::EmissionBytes() const
+{
+  std::size_t bytes = this->EmissionVolume.Bytes();
+  for (int c = BaseChannels; c < BaseChannels + EmissionChannels; ++c)
+  {
+    bytes += this->Accumulators[c].Bytes();
+  }
+  return bytes;
+}
+
 void Voxelizer::ReadCounts(std::vector<unsigned int>& counts) const
 {
   counts.resize(Cube(this->Resolution));

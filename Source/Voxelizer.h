@@ -60,6 +60,8 @@ public:
   int GetResolution() const { return this->Resolution; }
   bool HasEmission() const { return this->Emission; }
   std::size_t MemoryBytes() const;
+  /// The part of MemoryBytes() that only emissive scenes need.
+  std::size_t EmissionBytes() const;
 
   /// Read back: counts (one uint per voxel), flags (one byte), or a volume's RGBA texels.
   void ReadCounts(std::vector<unsigned int>& counts) const;

@@ -44,6 +44,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <unordered_map>
@@ -142,6 +143,13 @@ struct vtkVoxelGIPass::Internals
   bool RadianceValid = false;
   bool Traced = false;
   bool WarnedLights = false;
+  bool WarnedUnlit = false;
+  std::size_t WarnedLeftOut = 0;
+  bool AnySpecular = false;
+  bool InvalidateRequested = false;
+  int FramesSinceUpdate = 0;
+  bool VoxelizedThisFrame = false;
+  std::vector<unsigned long long> LastFrameKey; // what the last traced image depended on
   voxelgi::EmptyFramebuffer Framebuffer;
   voxelgi::VoxelGrid Grid;
   std::array<voxelgi::StageTimer, NUMBER_OF_STAGES> Timers;
@@ -267,8 +275,9 @@ double vtkVoxelGIPass::GetStageTime(int stage) const
 
 const char* vtkVoxelGIPass::GetStageName(int stage)
 {
-  static const char* names[NUMBER_OF_STAGES] = { "Clear", "VoxelizeStatic", "VoxelizeDynamic",
-    "Resolve", "ShadowMaps", "LightVoxels", "Mipmap", "Bounce", "GBuffer", "ConeTrace", "DebugView" };
+  static const char* names[NUMBER_OF_STAGES] = { "Scan", "Clear", "VoxelizeStatic",
+    "VoxelizeDynamic", "Resolve", "ShadowMaps", "LightVoxels", "Mipmap", "Bounce", "GBuffer",
+    "ConeTrace", "Present", "DebugView" };
   return (stage >= 0 && stage < NUMBER_OF_STAGES) ? names[stage] : "Unknown";
 }
 
@@ -293,6 +302,33 @@ double vtkVoxelGIPass::GetGridVoxelSize() const
 bool vtkVoxelGIPass::GetUsedHardwareConservativeRaster() const
 {
   return this->Internal->Voxels.GetHardwareConservative();
+}
+
+void vtkVoxelGIPass::Invalidate()
+{
+  this->Internal->InvalidateRequested = true;
+}
+
+unsigned long long vtkVoxelGIPass::GetAllocatedBytes(int resource) const
+{
+  const Internals& in = *this->Internal;
+  switch (resource)
+  {
+    case RESOURCE_VOXELIZATION:
+      return in.Voxels.MemoryBytes() - in.Voxels.EmissionBytes();
+    case RESOURCE_EMISSION:
+      return in.Voxels.EmissionBytes();
+    case RESOURCE_RADIANCE:
+      return in.Lighting.Radiance.Bytes();
+    case RESOURCE_DIRECT:
+      return in.Lighting.Direct.Bytes();
+    case RESOURCE_DIRECTIONAL:
+      return in.Mipmap.MemoryBytes();
+    case RESOURCE_SHADOW_MAPS:
+      return in.Shadows.Maps.Bytes();
+    default:
+      return 0;
+  }
 }
 
 unsigned long long vtkVoxelGIPass::GetVoxelMemoryBytes() const
@@ -334,26 +370,52 @@ void vtkVoxelGIPass::Render(const vtkRenderState* s)
   in.Times.fill(0.0);
   this->GIActive = false;
 
+  const bool traced = in.Traced;
   in.Traced = false;
+  in.VoxelizedThisFrame = false;
   vtkRenderer* renderer = s->GetRenderer();
   auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
   bool voxelsChanged = false;
+  bool radianceChanged = false;
   // Hardware picking renders through the pass too: it must see VTK's plain render steps.
   if (this->Enabled && renWin && !renderer->GetSelector() && this->CheckContext(renWin))
   {
     in.Window = renWin;
-    this->GIActive = this->UpdateVoxels(s, voxelsChanged) && this->UpdateRadiance(renderer, voxelsChanged);
+    const auto start = std::chrono::steady_clock::now();
+    this->GIActive = this->UpdateVoxels(s, voxelsChanged) &&
+      this->UpdateRadiance(renderer, voxelsChanged, radianceChanged);
+    in.Ran[STAGE_SCAN] = true;
+    // CPU time of the scan and of issuing the voxel work (the GPU stages have their own).
+    in.Times[STAGE_SCAN] =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   }
 
   const bool voxelView = this->DebugView >= DEBUG_VIEW_VOXEL_ALBEDO &&
     this->DebugView <= DEBUG_VIEW_VOXEL_RADIANCE;
   if (!this->GIActive || voxelView)
   {
+    in.LastFrameKey.clear();
     this->RenderDelegate(s);
   }
   else
   {
-    this->RenderGI(s);
+    // Everything the traced image depends on; unchanged, it is presented again.
+    std::vector<unsigned long long> key{ renderer->GetMTime(), this->GetMTime(),
+      renderer->GetActiveCamera()->GetMTime() };
+    int size[4];
+    renderer->GetTiledSizeAndOrigin(size, size + 1, size + 2, size + 3);
+    key.insert(key.end(), size, size + 4);
+    vtkCollectionSimpleIterator it;
+    renderer->GetViewProps()->InitTraversal(it);
+    while (vtkProp* prop = renderer->GetViewProps()->GetNextProp(it))
+    {
+      vtkActor* actor = vtkActor::SafeDownCast(prop);
+      key.push_back(actor && actor->GetMapper() ? ActorSignature(actor) : prop->GetMTime());
+      key.push_back(prop->GetVisibility());
+    }
+    const bool reuse = traced && !voxelsChanged && !radianceChanged && key == in.LastFrameKey;
+    in.LastFrameKey = key;
+    this->RenderGI(s, reuse);
   }
 
   if (this->GIActive && voxelView)
@@ -363,13 +425,16 @@ void vtkVoxelGIPass::Render(const vtkRenderState* s)
     in.EndStage(STAGE_DEBUG_VIEW, this->TimeStages);
   }
 
-  // Changes made while rendering (a mapper creating its default lookup table, say) are part
-  // of this frame, not news for the next one.
-  for (ActorRecord& record : in.Records)
+  // Changes made while voxelizing and rendering (a mapper creating its default lookup table,
+  // say) are part of this frame, not news for the next one.
+  if (in.VoxelizedThisFrame)
   {
-    if (record.Actor)
+    for (ActorRecord& record : in.Records)
     {
-      record.Signature = ActorSignature(record.Actor);
+      if (record.Actor)
+      {
+        record.Signature = ActorSignature(record.Actor);
+      }
     }
   }
 
@@ -412,20 +477,33 @@ bool vtkVoxelGIPass::UpdateVoxels(const vtkRenderState* s, bool& changed)
   double bounds[6];
   vtkMath::UninitializeBounds(bounds);
   bool haveBounds = false;
+  std::size_t leftOut = 0; // visible 3D props VTK renders without GI
+  bool anySpecular = false;
   vtkPropCollection* props = renderer->GetViewProps();
   vtkCollectionSimpleIterator it;
   props->InitTraversal(it);
   while (vtkProp* prop = props->GetNextProp(it))
   {
+    if (!prop->GetVisibility())
+    {
+      continue;
+    }
     vtkActor* actor = vtkActor::SafeDownCast(prop);
-    if (!actor || !actor->GetVisibility() || !vtkOpenGLPolyDataMapper::SafeDownCast(actor->GetMapper()) ||
+    if (!actor)
+    {
+      leftOut += prop->IsA("vtkVolume") ? 1 : 0;
+      continue;
+    }
+    if (!vtkOpenGLPolyDataMapper::SafeDownCast(actor->GetMapper()) ||
       actor->GetProperty()->GetRepresentation() != VTK_SURFACE)
     {
+      ++leftOut;
       continue;
     }
     actor->GetMapper()->Update();
     if (!actor->HasOpaqueGeometry())
     {
+      ++leftOut; // translucent
       continue;
     }
     const double* b = actor->GetBounds();
@@ -453,8 +531,17 @@ bool vtkVoxelGIPass::UpdateVoxels(const vtkRenderState* s, bool& changed)
       bounds[2 * i + 1] = haveBounds ? std::max(bounds[2 * i + 1], b[2 * i + 1]) : b[2 * i + 1];
     }
     haveBounds = true;
+    anySpecular = anySpecular || actor->GetProperty()->GetSpecular() > 0.0;
     records.push_back(record);
   }
+  if (leftOut > in.WarnedLeftOut)
+  {
+    vtkWarningMacro(<< leftOut
+                    << " visible props (translucent, volume, points or wireframe) are rendered "
+                       "by VTK without voxel GI.");
+    in.WarnedLeftOut = leftOut;
+  }
+  in.AnySpecular = anySpecular;
   if (records.empty())
   {
     in.Records.clear();
@@ -501,25 +588,53 @@ bool vtkVoxelGIPass::UpdateVoxels(const vtkRenderState* s, bool& changed)
     full = true;
   }
 
-  // Grid: refit when the scene left it, shrank to under half of it, or the settings changed.
-  voxelgi::VoxelGrid grid = in.Grid;
-  const double extent = std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] });
-  const bool refit = !grid.IsValid() || grid.Resolution != this->VoxelResolution ||
-    in.FittedPadding != this->GridPadding || !grid.Covers(bounds) ||
-    extent * (1.0 + 2.0 * this->GridPadding) < 0.5 * grid.Size();
-  if (refit)
-  {
-    if (voxelgi::FitVoxelGrid(bounds, this->VoxelResolution, this->GridPadding, grid) !=
-      voxelgi::FitStatus::Ok)
-    {
-      vtkErrorMacro(<< "Could not fit a voxel grid around the scene bounds; rendering without GI.");
-      in.Records.clear();
-      return false;
-    }
-    full = true;
-  }
-
   const bool emission = emissionScale > 0.0;
+  const bool hardware = this->HardwareConservativeRaster && in.HasConservativeRaster;
+  // Changes of the voxel settings (and the first frame) always rebuild; changes of the scene
+  // follow the update policy.
+  const bool settingsChanged = !in.Voxelized || !in.Grid.IsValid() ||
+    in.Grid.Resolution != this->VoxelResolution || in.FittedPadding != this->GridPadding ||
+    emission != in.Voxels.HasEmission() || hardware != in.Voxels.GetHardwareConservative();
+  // The scene left the grid or shrank to under half of it.
+  const double extent = std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] });
+  const bool refit = settingsChanged || !in.Grid.Covers(bounds) ||
+    extent * (1.0 + 2.0 * this->GridPadding) < 0.5 * in.Grid.Size();
+  const bool pending = full || dynamicChanged || refit;
+  bool due = settingsChanged || in.InvalidateRequested;
+  switch (this->UpdatePolicy)
+  {
+    case UPDATE_EVERY_FRAME:
+      due = true;
+      full = true;
+      break;
+    case UPDATE_EVERY_N_FRAMES:
+      due = due || (pending && in.FramesSinceUpdate + 1 >= this->UpdateInterval);
+      break;
+    case UPDATE_ON_DEMAND:
+      break;
+    default:
+      due = due || pending;
+      break;
+  }
+  if (!due)
+  {
+    // Keep the voxels and the records they were built from: the change stays pending.
+    ++in.FramesSinceUpdate;
+    changed = false;
+    return true;
+  }
+  full = full || refit || in.InvalidateRequested;
+  in.InvalidateRequested = false;
+  in.FramesSinceUpdate = 0;
+
+  voxelgi::VoxelGrid grid = in.Grid;
+  if (refit && voxelgi::FitVoxelGrid(bounds, this->VoxelResolution, this->GridPadding, grid) !=
+      voxelgi::FitStatus::Ok)
+  {
+    vtkErrorMacro(<< "Could not fit a voxel grid around the scene bounds; rendering without GI.");
+    in.Records.clear();
+    return false;
+  }
   if (emission != in.Voxels.HasEmission() || grid.Resolution != in.Voxels.GetResolution())
   {
     std::string error;
@@ -531,32 +646,23 @@ bool vtkVoxelGIPass::UpdateVoxels(const vtkRenderState* s, bool& changed)
       return false;
     }
     in.ShaderStageTime.Modified(); // the mapper shaders depend on the emission variant
-    full = true;
   }
-
-  const bool hardware = this->HardwareConservativeRaster && in.HasConservativeRaster;
-  if (hardware != in.Voxels.GetHardwareConservative())
-  {
-    in.Voxels.SetHardwareConservative(hardware);
-    full = true;
-  }
+  in.Voxels.SetHardwareConservative(hardware);
 
   in.Grid = grid;
   in.FittedPadding = this->GridPadding;
   in.EmissionScale = emissionScale;
   in.Records = records;
 
-  changed = full || dynamicChanged;
-  if (changed)
-  {
-    this->VoxelizeActors(renderer, full);
-    in.Voxelized = true;
-  }
+  changed = true;
+  this->VoxelizeActors(renderer, full);
+  in.Voxelized = true;
+  in.VoxelizedThisFrame = true;
   return true;
 }
 
 //------------------------------------------------------------------------------
-bool vtkVoxelGIPass::UpdateRadiance(vtkRenderer* renderer, bool voxelsChanged)
+bool vtkVoxelGIPass::UpdateRadiance(vtkRenderer* renderer, bool voxelsChanged, bool& changed)
 {
   Internals& in = *this->Internal;
   vtkOpenGLRenderWindow* renWin = in.Window;
@@ -578,6 +684,18 @@ bool vtkVoxelGIPass::UpdateRadiance(vtkRenderer* renderer, bool voxelsChanged)
     in.WarnedLights = true;
   }
   in.LitScene = in.Lights.GetCount() > 0;
+  changed = false;
+  if (!in.LitScene && !in.Voxels.HasEmission())
+  {
+    if (!in.WarnedUnlit)
+    {
+      vtkWarningMacro(<< "The scene has no light and no emissive prop: nothing to illuminate, "
+                         "rendering without GI.");
+      in.WarnedUnlit = true;
+    }
+    in.RadianceValid = false;
+    return false;
+  }
   in.Lights.Bind();
 
   const double maxDistance = this->MaxTraceDistance * in.Grid.Resolution;
@@ -591,6 +709,7 @@ bool vtkVoxelGIPass::UpdateRadiance(vtkRenderer* renderer, bool voxelsChanged)
   {
     return true;
   }
+  changed = true;
 
   std::string error;
   const int res = in.Grid.Resolution;
@@ -609,7 +728,10 @@ bool vtkVoxelGIPass::UpdateRadiance(vtkRenderer* renderer, bool voxelsChanged)
     std::vector<vtkProp*> casters;
     for (const ActorRecord& record : in.Records)
     {
-      casters.push_back(record.Actor);
+      if (record.Actor)
+      {
+        casters.push_back(record.Actor);
+      }
     }
     if (!in.Shadows.Render(renderer, in.Lights.GetLights(), casters, in.Grid,
           this->ShadowMapResolution, error))
@@ -655,7 +777,7 @@ bool vtkVoxelGIPass::UpdateRadiance(vtkRenderer* renderer, bool voxelsChanged)
 }
 
 //------------------------------------------------------------------------------
-void vtkVoxelGIPass::RenderGI(const vtkRenderState* s)
+void vtkVoxelGIPass::RenderGI(const vtkRenderState* s, bool reuse)
 {
   Internals& in = *this->Internal;
   vtkRenderer* renderer = s->GetRenderer();
@@ -668,11 +790,54 @@ void vtkVoxelGIPass::RenderGI(const vtkRenderState* s)
     return;
   }
 
+  vtkRenderStepsPass* steps = vtkRenderStepsPass::SafeDownCast(this->DelegatePass);
+  if (!reuse)
+  {
+    this->TraceFrame(s, steps, width, height);
+  }
+  in.Traced = true;
+
+  in.BeginStage(STAGE_PRESENT, timed);
+  {
+    vtkOpenGLState* ostate = renWin->GetState();
+    vtkOpenGLState::ScopedglViewport viewport(ostate);
+    vtkOpenGLState::ScopedglScissor scissor(ostate);
+    vtkOpenGLState::ScopedglEnableDisable scissorTest(ostate, GL_SCISSOR_TEST);
+    vtkOpenGLState::ScopedglEnableDisable depthTest(ostate, GL_DEPTH_TEST);
+    ostate->vtkglEnable(GL_SCISSOR_TEST);
+    in.Tracer.Present(renWin, in.Frame, x, y, width, height);
+
+    // VTK's remaining steps draw over the composite, depth-tested against the scene.
+    if (steps)
+    {
+      ostate->vtkglEnable(GL_DEPTH_TEST);
+      for (vtkRenderPass* pass : { steps->GetTranslucentPass(), steps->GetVolumetricPass(),
+             steps->GetOverlayPass(), steps->GetPostProcessPass() })
+      {
+        if (pass)
+        {
+          pass->Render(s);
+          this->NumberOfRenderedProps += pass->GetNumberOfRenderedProps();
+        }
+      }
+    }
+  }
+  in.EndStage(STAGE_PRESENT, timed);
+}
+
+//------------------------------------------------------------------------------
+void vtkVoxelGIPass::TraceFrame(
+  const vtkRenderState* s, vtkRenderStepsPass* steps, int width, int height)
+{
+  Internals& in = *this->Internal;
+  vtkRenderer* renderer = s->GetRenderer();
+  vtkOpenGLRenderWindow* renWin = in.Window;
+  const bool timed = this->TimeStages != 0;
+
   // G-buffer: VTK's camera, lights and opaque steps (the whole delegate if it is not a
   // vtkRenderStepsPass) into the pass's framebuffer.
   in.BeginStage(STAGE_GBUFFER, timed);
   in.Frame.Prepare(renWin, width, height);
-  vtkRenderStepsPass* steps = vtkRenderStepsPass::SafeDownCast(this->DelegatePass);
   vtkRenderPass* opaque = this->DelegatePass;
   if (steps)
   {
@@ -707,7 +872,8 @@ void vtkVoxelGIPass::RenderGI(const vtkRenderState* s)
   trace.StartOffset = static_cast<float>(this->ConeStartOffset);
   trace.IndirectIntensity = static_cast<float>(this->IndirectIntensity);
   trace.SpecularIntensity = static_cast<float>(this->SpecularIntensity);
-  trace.SpecularCone = this->SpecularCone != 0;
+  // No specular material in the scene: no specular cone.
+  trace.SpecularCone = this->SpecularCone && in.AnySpecular;
   trace.AOStrength = static_cast<float>(this->AmbientOcclusionStrength);
   trace.AOFalloff = static_cast<float>(this->AmbientOcclusionFalloff);
   trace.ConeShadows = this->ConeShadows != 0;
@@ -716,32 +882,7 @@ void vtkVoxelGIPass::RenderGI(const vtkRenderState* s)
   trace.View = this->DebugView >= DEBUG_VIEW_DIRECT ? this->DebugView - DEBUG_VIEW_DIRECT + 1 : 0;
   in.Lights.Bind();
   in.Tracer.Trace(renderer, in.Grid, in.Frame, in.Lighting, in.Mipmap, in.Cones, trace);
-  {
-    vtkOpenGLState* ostate = renWin->GetState();
-    vtkOpenGLState::ScopedglViewport viewport(ostate);
-    vtkOpenGLState::ScopedglScissor scissor(ostate);
-    vtkOpenGLState::ScopedglEnableDisable scissorTest(ostate, GL_SCISSOR_TEST);
-    vtkOpenGLState::ScopedglEnableDisable depthTest(ostate, GL_DEPTH_TEST);
-    ostate->vtkglEnable(GL_SCISSOR_TEST);
-    in.Tracer.Present(renWin, in.Frame, x, y, width, height);
-
-    // VTK's remaining steps draw over the composite, depth-tested against the scene.
-    if (steps)
-    {
-      ostate->vtkglEnable(GL_DEPTH_TEST);
-      for (vtkRenderPass* pass : { steps->GetTranslucentPass(), steps->GetVolumetricPass(),
-             steps->GetOverlayPass(), steps->GetPostProcessPass() })
-      {
-        if (pass)
-        {
-          pass->Render(s);
-          this->NumberOfRenderedProps += pass->GetNumberOfRenderedProps();
-        }
-      }
-    }
-  }
   in.EndStage(STAGE_CONE_TRACE, timed);
-  in.Traced = true;
 }
 
 //------------------------------------------------------------------------------
@@ -1037,6 +1178,8 @@ void vtkVoxelGIPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "GridPadding: " << this->GridPadding << "\n";
   os << indent << "DebugView: " << this->DebugView << "\n";
   os << indent << "AutoDynamic: " << this->AutoDynamic << "\n";
+  os << indent << "UpdatePolicy: " << this->UpdatePolicy << "\n";
+  os << indent << "UpdateInterval: " << this->UpdateInterval << "\n";
   os << indent << "HardwareConservativeRaster: " << this->HardwareConservativeRaster << "\n";
   os << indent << "TimeStages: " << this->TimeStages << "\n";
   os << indent << "LightOcclusion: " << this->LightOcclusion << "\n";

@@ -48,6 +48,7 @@ class vtkInformationDoubleVectorKey;
 class vtkInformationIntegerKey;
 class vtkProp;
 class vtkRenderPass;
+class vtkRenderStepsPass;
 class vtkRenderWindow;
 
 class VTKRENDERINGVOXELGI_EXPORT vtkVoxelGIPass : public vtkOpenGLRenderPass
@@ -301,6 +302,44 @@ public:
   vtkBooleanMacro(AutoDynamic, vtkTypeBool);
   ///@}
 
+  enum UpdatePolicies
+  {
+    UPDATE_ON_CHANGE = 0,
+    UPDATE_EVERY_FRAME = 1,
+    UPDATE_EVERY_N_FRAMES = 2,
+    UPDATE_ON_DEMAND = 3
+  };
+
+  ///@{
+  /**
+   * When the voxels are rebuilt. ON_CHANGE: whenever an actor, mapper, input, property or
+   * transform changed (only the changed dynamic actors when possible). EVERY_FRAME: a full
+   * revoxelization every frame. EVERY_N_FRAMES: changes are picked up at most every
+   * UpdateInterval frames. ON_DEMAND: only after Invalidate(). Changes of the voxel settings
+   * (resolution, padding) always rebuild. Lights and camera are followed every frame whatever
+   * the policy. Default: UPDATE_ON_CHANGE.
+   */
+  vtkSetClampMacro(UpdatePolicy, int, UPDATE_ON_CHANGE, UPDATE_ON_DEMAND);
+  vtkGetMacro(UpdatePolicy, int);
+  void SetUpdatePolicyToOnChange() { this->SetUpdatePolicy(UPDATE_ON_CHANGE); }
+  void SetUpdatePolicyToEveryFrame() { this->SetUpdatePolicy(UPDATE_EVERY_FRAME); }
+  void SetUpdatePolicyToEveryNFrames() { this->SetUpdatePolicy(UPDATE_EVERY_N_FRAMES); }
+  void SetUpdatePolicyToOnDemand() { this->SetUpdatePolicy(UPDATE_ON_DEMAND); }
+  ///@}
+
+  ///@{
+  /**
+   * Frames between updates for UPDATE_EVERY_N_FRAMES, in [1, 1000]. Default: 10.
+   */
+  vtkSetClampMacro(UpdateInterval, int, 1, 1000);
+  vtkGetMacro(UpdateInterval, int);
+  ///@}
+
+  /**
+   * Rebuild the voxels (fully) at the next render, whatever the update policy.
+   */
+  void Invalidate();
+
   ///@{
   /**
    * Rasterize conservatively with the GPU's GL_NV_conservative_raster where the context has
@@ -342,7 +381,8 @@ public:
 
   enum Stages
   {
-    STAGE_CLEAR = 0,
+    STAGE_SCAN = 0,
+    STAGE_CLEAR,
     STAGE_VOXELIZE_STATIC,
     STAGE_VOXELIZE_DYNAMIC,
     STAGE_RESOLVE,
@@ -352,13 +392,16 @@ public:
     STAGE_BOUNCE,
     STAGE_GBUFFER,
     STAGE_CONE_TRACE,
+    STAGE_PRESENT,
     STAGE_DEBUG_VIEW,
     NUMBER_OF_STAGES
   };
 
   /**
-   * Whether a stage ran in the last frame, its GPU time in milliseconds (0 unless
-   * TimeStages is on) and its name.
+   * Whether a stage ran in the last frame, its time in milliseconds and its name. SCAN (the
+   * CPU scene scan) is always timed, on the CPU; the others are GPU times, measured only with
+   * TimeStages on (0 otherwise). When nothing changed, not even the camera, the last traced
+   * image is presented again: only SCAN and PRESENT run.
    */
   bool GetStageRan(int stage) const;
   double GetStageTime(int stage) const;
@@ -382,6 +425,22 @@ public:
    * GPU memory held by the voxel volumes and buffers, in bytes.
    */
   unsigned long long GetVoxelMemoryBytes() const;
+
+  enum Resources
+  {
+    RESOURCE_VOXELIZATION = 0, ///< accumulators, flags, albedo and normal volumes
+    RESOURCE_EMISSION,         ///< emission accumulators and volume (emissive scenes only)
+    RESOURCE_RADIANCE,         ///< the radiance volume (with mips when isotropic)
+    RESOURCE_DIRECT,           ///< direct light kept for bounces (Bounces > 0 only)
+    RESOURCE_DIRECTIONAL,      ///< the six anisotropic volumes (anisotropic mipmaps only)
+    RESOURCE_SHADOW_MAPS       ///< shadow maps (LIGHT_OCCLUSION_SHADOW_MAPS only)
+  };
+
+  /**
+   * GPU memory of one kind of resource, in bytes: 0 when the scene or the settings do not
+   * need it (it is then not allocated).
+   */
+  unsigned long long GetAllocatedBytes(int resource) const;
 
   enum Volumes
   {
@@ -435,9 +494,12 @@ protected:
   /// OpenGL 4.3 available? Reports a missing capability once.
   bool CheckContext(vtkRenderWindow* renWin);
   /// Light the voxels, build the mipmaps and bounce, when voxels, lights or settings changed.
-  bool UpdateRadiance(vtkRenderer* renderer, bool voxelsChanged);
-  /// G-buffer, cone tracing, composite and the remaining VTK steps.
-  void RenderGI(const vtkRenderState* s);
+  bool UpdateRadiance(vtkRenderer* renderer, bool voxelsChanged, bool& changed);
+  /// G-buffer, cone tracing, composite and the remaining VTK steps. `reuse`: nothing
+  /// changed since the last traced frame, present it again.
+  void RenderGI(const vtkRenderState* s, bool reuse);
+  /// G-buffer and cone tracing + composite into the float images.
+  void TraceFrame(const vtkRenderState* s, vtkRenderStepsPass* steps, int width, int height);
 
   vtkRenderPass* DelegatePass = nullptr;
   vtkTypeBool Enabled = 1;
@@ -446,6 +508,8 @@ protected:
   int DebugView = DEBUG_VIEW_NONE;
   vtkTypeBool AutoDynamic = 1;
   vtkTypeBool HardwareConservativeRaster = 1;
+  int UpdatePolicy = UPDATE_ON_CHANGE;
+  int UpdateInterval = 10;
   vtkTypeBool TimeStages = 0;
   int LightOcclusion = LIGHT_OCCLUSION_VOXEL_SHADOWS;
   int ShadowMapResolution = 1024;
