@@ -1,0 +1,172 @@
+// Leave out what the scene does not need: for each kind of change, two frames are rendered
+// and exactly the expected stages must run on the second; the image must then equal a full
+// recompute by a fresh pass. Also the update policies and the memory of unneeded volumes.
+#include "VoxelGITestUtilities.h"
+#include "vtkVoxelGIPass.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkCubeSource.h"
+#include "vtkFloatArray.h"
+#include "vtkLight.h"
+#include "vtkNew.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSphereSource.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <functional>
+#include <string>
+
+namespace
+{
+std::string Stages(vtkVoxelGIPass* gi)
+{
+  std::string ran;
+  for (int s = 0; s < vtkVoxelGIPass::NUMBER_OF_STAGES; ++s)
+  {
+    if (gi->GetStageRan(s))
+    {
+      ran += std::string(ran.empty() ? "" : ",") + vtkVoxelGIPass::GetStageName(s);
+    }
+  }
+  return ran;
+}
+
+const std::string Trace = "GBuffer,ConeTrace,Present";
+const std::string Relight = "LightVoxels,Mipmap,Bounce," + Trace;
+const std::string Full = "Scan,Clear,VoxelizeStatic,VoxelizeDynamic,Resolve," + Relight;
+
+// Largest difference between the pass's composite and a full recompute by a fresh pass.
+double DifferenceFromFullRecompute(vtkRenderer* renderer, vtkRenderWindow* window, vtkVoxelGIPass* gi)
+{
+  vtkNew<vtkFloatArray> incremental;
+  gi->GetFloatImage(vtkVoxelGIPass::IMAGE_COMPOSITE, incremental);
+  vtkNew<vtkVoxelGIPass> fresh;
+  fresh->SetVoxelResolution(gi->GetVoxelResolution());
+  renderer->SetPass(fresh);
+  window->Render();
+  vtkNew<vtkFloatArray> full;
+  fresh->GetFloatImage(vtkVoxelGIPass::IMAGE_COMPOSITE, full);
+  renderer->SetPass(gi);
+  fresh->ReleaseGraphicsResources(window);
+  if (full->GetNumberOfValues() != incremental->GetNumberOfValues() || full->GetNumberOfValues() == 0)
+  {
+    return 1e30;
+  }
+  double worst = 0.0;
+  for (vtkIdType i = 0; i < full->GetNumberOfValues(); ++i)
+  {
+    worst = std::max(worst, static_cast<double>(std::abs(full->GetValue(i) - incremental->GetValue(i))));
+  }
+  return worst;
+}
+}
+
+int TestStageSkipping(int, char*[])
+{
+  vtkNew<vtkRenderer> renderer;
+  using glm::dvec3;
+  voxelgi_test::AddQuad(renderer, dvec3(-3, 0, -3), dvec3(-3, 0, 3), dvec3(3, 0, -3), 0.8, 0.8, 0.8);
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetCenter(-1.0, 0.8, 0.0);
+  sphere->SetRadius(0.8);
+  voxelgi_test::AddActor(renderer, sphere, 0.9, 0.5, 0.2);
+  vtkNew<vtkCubeSource> cubeSource;
+  cubeSource->SetBounds(0.5, 1.5, 0.0, 1.0, -0.5, 0.5);
+  vtkActor* cube = voxelgi_test::AddActor(renderer, cubeSource, 0.2, 0.4, 0.9);
+  vtkVoxelGIPass::SetPropDynamic(cube, true);
+  vtkNew<vtkLight> light;
+  light->SetLightTypeToSceneLight();
+  light->SetPosition(1.0, 4.0, 2.0);
+  light->SetFocalPoint(0.0, 0.0, 0.0);
+  renderer->AddLight(light);
+  renderer->GetActiveCamera()->SetPosition(0.0, 3.0, 7.0);
+  renderer->GetActiveCamera()->SetFocalPoint(0.0, 0.5, 0.0);
+
+  vtkNew<vtkRenderWindow> window;
+  window->SetSize(100, 100);
+  window->AddRenderer(renderer);
+  vtkNew<vtkVoxelGIPass> gi;
+  gi->SetVoxelResolution(32);
+  renderer->SetPass(gi);
+  renderer->ResetCameraClippingRange();
+
+  window->Render();
+  VOXELGI_CHECK(Stages(gi) == Full, "first frame ran " << Stages(gi));
+
+  struct Case
+  {
+    const char* Name;
+    std::function<void()> Change;
+    std::string Expected;
+  };
+  const Case cases[] = {
+    { "nothing changed", [] {}, "Scan,Present" },
+    { "camera moved", [&] { renderer->GetActiveCamera()->Azimuth(10.0); }, "Scan," + Trace },
+    { "light changed", [&] { light->SetIntensity(0.7); }, "Scan," + Relight },
+    { "dynamic actor moved", [&] { cube->AddPosition(0.0, 0.0, 1.0); },
+      "Scan,Clear,VoxelizeDynamic,Resolve," + Relight },
+    { "bounds grew beyond the grid", [&] { cube->AddPosition(5.0, 0.0, 0.0); }, Full },
+  };
+  for (const Case& c : cases)
+  {
+    window->Render(); // settle
+    c.Change();
+    renderer->ResetCameraClippingRange();
+    window->Render();
+    std::cout << c.Name << ": " << Stages(gi) << std::endl;
+    VOXELGI_CHECK(Stages(gi) == c.Expected, c.Name << " ran " << Stages(gi) << ", expected " << c.Expected);
+    const double difference = DifferenceFromFullRecompute(renderer, window, gi);
+    std::cout << "  largest difference from a full recompute: " << difference << std::endl;
+    VOXELGI_CHECK(difference < 1e-4, c.Name << ": skipping changed the image");
+  }
+
+  // Update policies.
+  gi->SetUpdatePolicyToOnDemand();
+  window->Render();
+  cube->AddPosition(-1.0, 0.0, 0.0);
+  window->Render();
+  VOXELGI_CHECK(Stages(gi) == "Scan," + Trace, "on demand, a moved actor ran " << Stages(gi));
+  gi->Invalidate();
+  window->Render();
+  VOXELGI_CHECK(Stages(gi) == Full, "after Invalidate() ran " << Stages(gi));
+
+  gi->SetUpdatePolicyToEveryNFrames();
+  gi->SetUpdateInterval(3);
+  gi->Invalidate(); // an update now; the next may come three frames later
+  window->Render();
+  std::string voxelFrames;
+  for (int frame = 0; frame < 6; ++frame)
+  {
+    cube->AddPosition(0.0, 0.0, 0.1);
+    window->Render();
+    voxelFrames += gi->GetStageRan(vtkVoxelGIPass::STAGE_VOXELIZE_DYNAMIC) ? "V" : ".";
+  }
+  VOXELGI_CHECK(voxelFrames == "..V..V", "every 3 frames voxelized as " << voxelFrames);
+
+  gi->SetUpdatePolicyToEveryFrame();
+  window->Render();
+  window->Render();
+  VOXELGI_CHECK(Stages(gi) == Full, "every frame, an unchanged frame ran " << Stages(gi));
+  gi->SetUpdatePolicyToOnChange();
+
+  // Memory of what the scene or the settings do not need is not allocated.
+  VOXELGI_CHECK(gi->GetAllocatedBytes(vtkVoxelGIPass::RESOURCE_EMISSION) == 0, "emission allocated");
+  VOXELGI_CHECK(gi->GetAllocatedBytes(vtkVoxelGIPass::RESOURCE_SHADOW_MAPS) == 0, "shadow maps allocated");
+  VOXELGI_CHECK(gi->GetAllocatedBytes(vtkVoxelGIPass::RESOURCE_DIRECT) > 0, "no direct volume for bounces");
+  VOXELGI_CHECK(gi->GetAllocatedBytes(vtkVoxelGIPass::RESOURCE_DIRECTIONAL) > 0, "no anisotropic volumes");
+  gi->SetBounces(0);
+  gi->AnisotropicMipmapsOff();
+  vtkVoxelGIPass::SetPropEmission(cube, 2.0, 2.0, 2.0);
+  window->Render();
+  VOXELGI_CHECK(gi->GetAllocatedBytes(vtkVoxelGIPass::RESOURCE_DIRECT) == 0, "direct volume without bounces");
+  VOXELGI_CHECK(gi->GetAllocatedBytes(vtkVoxelGIPass::RESOURCE_DIRECTIONAL) == 0, "anisotropic volumes while isotropic");
+  VOXELGI_CHECK(gi->GetAllocatedBytes(vtkVoxelGIPass::RESOURCE_EMISSION) > 0, "no emission volume for an emitter");
+  gi->SetLightOcclusionToShadowMaps();
+  window->Render();
+  VOXELGI_CHECK(gi->GetAllocatedBytes(vtkVoxelGIPass::RESOURCE_SHADOW_MAPS) > 0, "no shadow map");
+  std::cout << "voxel memory " << gi->GetVoxelMemoryBytes() << " bytes" << std::endl;
+  return EXIT_SUCCESS;
+}
