@@ -381,13 +381,8 @@ void vtkVoxelGIPass::Render(const vtkRenderState* s)
   if (this->Enabled && renWin && !renderer->GetSelector() && this->CheckContext(renWin))
   {
     in.Window = renWin;
-    const auto start = std::chrono::steady_clock::now();
     this->GIActive = this->UpdateVoxels(s, voxelsChanged) &&
       this->UpdateRadiance(renderer, voxelsChanged, radianceChanged);
-    in.Ran[STAGE_SCAN] = true;
-    // CPU time of the scan and of issuing the voxel work (the GPU stages have their own).
-    in.Times[STAGE_SCAN] =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   }
 
   const bool voxelView = this->DebugView >= DEBUG_VIEW_VOXEL_ALBEDO &&
@@ -440,7 +435,7 @@ void vtkVoxelGIPass::Render(const vtkRenderState* s)
 
   if (this->TimeStages)
   {
-    for (int stage = 0; stage < NUMBER_OF_STAGES; ++stage)
+    for (int stage = STAGE_SCAN + 1; stage < NUMBER_OF_STAGES; ++stage) // the scan is CPU time
     {
       in.Times[stage] = in.Ran[stage] ? in.Timers[stage].Milliseconds() : 0.0;
     }
@@ -462,6 +457,13 @@ bool vtkVoxelGIPass::UpdateVoxels(const vtkRenderState* s, bool& changed)
 {
   Internals& in = *this->Internal;
   vtkRenderer* renderer = s->GetRenderer();
+  // CPU time of the scene scan and change detection (not of the GPU work it then issues).
+  const auto scanStart = std::chrono::steady_clock::now();
+  auto endScan = [&in, scanStart]() {
+    in.Ran[STAGE_SCAN] = true;
+    in.Times[STAGE_SCAN] =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - scanStart).count();
+  };
 
   // Scene scan: every visible opaque surface actor drawn by a polydata mapper, including
   // the ones outside the view frustum (they still cast and reflect light).
@@ -544,6 +546,7 @@ bool vtkVoxelGIPass::UpdateVoxels(const vtkRenderState* s, bool& changed)
   in.AnySpecular = anySpecular;
   if (records.empty())
   {
+    endScan();
     in.Records.clear();
     return false;
   }
@@ -616,6 +619,7 @@ bool vtkVoxelGIPass::UpdateVoxels(const vtkRenderState* s, bool& changed)
       due = due || pending;
       break;
   }
+  endScan();
   if (!due)
   {
     // Keep the voxels and the records they were built from: the change stays pending.
