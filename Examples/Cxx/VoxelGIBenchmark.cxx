@@ -1,8 +1,10 @@
 // Per-stage timing of vtkVoxelGIPass over scripted frame sequences (a benchmark, not a test).
 //
-//   VoxelGIBenchmark [--scene cornell|field] [--objects N] [--size WxH] [--resolution R]
-//                    [--frames F] [--warmup W] [--egl] [--csv FILE] [--json FILE]
+//   VoxelGIBenchmark [--scene cornell|field|atrium] [--objects N] [--size WxH] [--resolution R]
+//                    [--frames F] [--warmup W] [--egl] [--csv FILE] [--json FILE] [--image FILE]
 //
+// Scenes: the Cornell box (36 triangles), a field of N spheres and boxes, and an atrium of
+// Sponza scale (about 280k triangles: columns, arches, galleries, drapes, coloured).
 // Sequences: static (nothing changes), orbit (camera only), light (one light moves),
 // one-moving (one dynamic actor moves), all-moving (every actor moves), and plain (GI off,
 // VTK alone, static). Each frame's wall time (after glFinish) and per-stage GPU times
@@ -15,10 +17,20 @@
 #include "vtkActorCollection.h"
 #include "vtkCamera.h"
 #include "vtkCubeSource.h"
+#include "vtkCylinderSource.h"
+#include "vtkPNGWriter.h"
+#include "vtkParametricFunctionSource.h"
+#include "vtkParametricTorus.h"
+#include "vtkTransform.h"
+#include "vtkTransformPolyDataFilter.h"
+#include "vtkWindowToImageFilter.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkPlaneSource.h"
+#include "vtkCell.h"
+#include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkRenderWindow.h"
@@ -51,6 +63,7 @@ struct Options
   bool EGL = false;
   std::string CSV = "voxelgi-benchmark.csv";
   std::string JSON = "voxelgi-benchmark.json";
+  std::string Image; // PNG of the first GI frame, if given
 };
 
 vtkActor* AddActor(vtkRenderer* renderer, vtkAlgorithm* source, double r, double g, double b)
@@ -120,6 +133,105 @@ std::string RendererName(vtkRenderWindow* window)
   return name;
 }
 
+vtkActor* AddPlaced(vtkRenderer* renderer, vtkAlgorithm* source, vtkTransform* transform,
+  double r, double g, double b)
+{
+  vtkNew<vtkTransformPolyDataFilter> place;
+  place->SetInputConnection(source->GetOutputPort());
+  place->SetTransform(transform);
+  return AddActor(renderer, place, r, g, b);
+}
+
+// A Sponza-like atrium, 30 x 12 x 14 units: floor, side walls, two rows of columns carrying
+// arches and a gallery floor, and waving drapes between the columns. About 280k triangles.
+void AddAtrium(vtkRenderer* renderer)
+{
+  const double length = 30.0, width = 12.0, height = 14.0;
+  auto plane = [&](double ox, double oy, double oz, double ax, double ay, double az, double bx,
+                 double by, double bz, int resolution, double r, double g, double b) {
+    vtkNew<vtkPlaneSource> quad;
+    quad->SetOrigin(ox, oy, oz);
+    quad->SetPoint1(ax, ay, az);
+    quad->SetPoint2(bx, by, bz);
+    quad->SetResolution(resolution, resolution);
+    return AddActor(renderer, quad, r, g, b);
+  };
+  plane(0, 0, 0, 0, 0, width, length, 0, 0, 64, 0.75, 0.7, 0.6); // floor
+  plane(0, 0, 0, length, 0, 0, 0, height, 0, 32, 0.8, 0.75, 0.65); // walls
+  plane(0, 0, width, 0, height, width, length, 0, width, 32, 0.8, 0.75, 0.65);
+  for (int side = 0; side < 2; ++side)
+  {
+    const double z = side ? width - 2.5 : 2.5;
+    for (int i = 0; i < 10; ++i)
+    {
+      const double x = 1.5 + 3.0 * i;
+      vtkNew<vtkCylinderSource> column;
+      column->SetResolution(64);
+      column->SetRadius(0.4);
+      column->SetHeight(6.0);
+      vtkNew<vtkTransform> t;
+      t->Translate(x, 3.0, z);
+      AddPlaced(renderer, column, t, 0.85, 0.82, 0.75);
+      vtkNew<vtkCylinderSource> upper; // gallery columns
+      upper->SetResolution(64);
+      upper->SetRadius(0.3);
+      upper->SetHeight(4.5);
+      vtkNew<vtkTransform> tu;
+      tu->Translate(x, 9.75, z);
+      AddPlaced(renderer, upper, tu, 0.85, 0.82, 0.75);
+      if (i < 9)
+      {
+        vtkNew<vtkParametricTorus> torus; // an arch: the upper half of a torus
+        torus->SetRingRadius(1.5);
+        torus->SetCrossSectionRadius(0.25);
+        torus->SetMaximumU(vtkMath::Pi());
+        vtkNew<vtkParametricFunctionSource> arch;
+        arch->SetParametricFunction(torus);
+        arch->SetUResolution(128);
+        arch->SetVResolution(30);
+        vtkNew<vtkTransform> ta;
+        ta->Translate(x + 1.5, 6.0, z);
+        AddPlaced(renderer, arch, ta, 0.8, 0.7, 0.55);
+        // drapes between the lower columns, rippled
+        vtkNew<vtkPlaneSource> drape;
+        drape->SetResolution(54, 54);
+        drape->SetOrigin(0, 0, 0);
+        drape->SetPoint1(2.2, 0, 0);
+        drape->SetPoint2(0, 4.0, 0);
+        vtkNew<vtkTransform> td;
+        td->Translate(x + 0.4, 0.8, z + (side ? 0.6 : -0.6));
+        const double hue = (i % 3) / 3.0;
+        vtkActor* d = AddPlaced(renderer, drape, td, 0.7 - 0.5 * hue, 0.15 + 0.5 * hue, 0.2);
+        d->RotateY(side ? 8.0 : -8.0);
+      }
+    }
+    // gallery floor over the arches
+    plane(0, 7.8, side ? width - 3.5 : 0, 0, 7.8, side ? width : 3.5, length, 7.8,
+      side ? width - 3.5 : 0, 48, 0.7, 0.66, 0.6);
+  }
+  vtkNew<vtkLight> sun;
+  sun->SetLightTypeToSceneLight();
+  sun->SetPositional(false);
+  sun->SetPosition(length * 0.6, height * 3.0, width * 0.8);
+  sun->SetFocalPoint(length * 0.5, 0.0, width * 0.5);
+  sun->SetIntensity(1.2);
+  renderer->AddLight(sun);
+  vtkNew<vtkLight> lamp;
+  lamp->SetLightTypeToSceneLight();
+  lamp->SetPositional(true);
+  lamp->SetConeAngle(90.0);
+  lamp->SetPosition(length * 0.2, 3.0, width * 0.5);
+  lamp->SetColor(1.0, 0.8, 0.6);
+  lamp->SetIntensity(0.6);
+  renderer->AddLight(lamp);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetPosition(-2.0, 4.0, width * 0.5);
+  camera->SetFocalPoint(length, 4.5, width * 0.5);
+  camera->SetViewUp(0, 1, 0);
+  camera->SetViewAngle(60.0);
+  renderer->ResetCameraClippingRange();
+}
+
 double Median(std::vector<double> values)
 {
   if (values.empty())
@@ -150,13 +262,15 @@ bool Parse(int argc, char* argv[], Options& o)
     else if (arg == "--egl") o.EGL = true;
     else if (arg == "--csv") o.CSV = next();
     else if (arg == "--json") o.JSON = next();
+    else if (arg == "--image") o.Image = next();
     else
     {
       std::cerr << "unknown argument " << arg << std::endl;
       return false;
     }
   }
-  return o.Width > 0 && o.Height > 0 && o.Frames > 0 && (o.Scene == "cornell" || o.Scene == "field");
+  return o.Width > 0 && o.Height > 0 && o.Frames > 0 &&
+    (o.Scene == "cornell" || o.Scene == "field" || o.Scene == "atrium");
 }
 }
 
@@ -165,8 +279,9 @@ int main(int argc, char* argv[])
   Options o;
   if (!Parse(argc, argv, o))
   {
-    std::cerr << "usage: VoxelGIBenchmark [--scene cornell|field] [--objects N] [--size WxH] "
-                 "[--resolution R] [--frames F] [--warmup W] [--egl] [--csv FILE] [--json FILE]"
+    std::cerr << "usage: VoxelGIBenchmark [--scene cornell|field|atrium] [--objects N] [--size WxH] "
+                 "[--resolution R] [--frames F] [--warmup W] [--egl] [--csv FILE] [--json FILE] "
+                 "[--image FILE]"
               << std::endl;
     return EXIT_FAILURE;
   }
@@ -176,18 +291,35 @@ int main(int argc, char* argv[])
   {
     vtkVoxelGIScenes::AddCornellBox(renderer);
   }
+  else if (o.Scene == "atrium")
+  {
+    AddAtrium(renderer);
+  }
   else
   {
     AddField(renderer, o.Objects);
   }
   std::vector<vtkActor*> actors;
+  vtkIdType triangles = 0;
   vtkActorCollection* collection = renderer->GetActors();
   vtkCollectionSimpleIterator it;
   collection->InitTraversal(it);
   while (vtkActor* actor = collection->GetNextActor(it))
   {
     actors.push_back(actor);
+    actor->GetMapper()->Update();
+    if (vtkPolyData* poly = vtkPolyData::SafeDownCast(actor->GetMapper()->GetInputDataObject(0, 0)))
+    {
+      // quads and strips count as the triangles they are drawn as
+      for (vtkIdType c = 0; c < poly->GetNumberOfCells(); ++c)
+      {
+        const vtkIdType n = poly->GetCell(c)->GetNumberOfPoints();
+        triangles += poly->GetCellType(c) == VTK_TRIANGLE_STRIP ? n - 2 : (n >= 3 ? n - 2 : 0);
+      }
+    }
   }
+  std::cout << o.Scene << ": " << actors.size() << " actors, " << triangles << " triangles"
+            << std::endl;
   // The mover: the Cornell box's short block, or the field's first object.
   vtkActor* mover = actors[o.Scene == "cornell" ? 5 : 1];
   vtkVoxelGIPass::SetPropDynamic(mover, true);
@@ -203,6 +335,18 @@ int main(int argc, char* argv[])
   gi->SetVoxelResolution(o.Resolution);
   gi->TimeStagesOn();
   renderer->SetPass(gi);
+
+  if (!o.Image.empty())
+  {
+    window->Render();
+    vtkNew<vtkWindowToImageFilter> grab;
+    grab->SetInput(window);
+    grab->ReadFrontBufferOff();
+    vtkNew<vtkPNGWriter> writer;
+    writer->SetInputConnection(grab->GetOutputPort());
+    writer->SetFileName(o.Image.c_str());
+    writer->Write();
+  }
 
   struct Sequence
   {
@@ -275,7 +419,7 @@ int main(int argc, char* argv[])
   }
 
   std::ofstream json(o.JSON);
-  json << "{\n  \"scene\": \"" << o.Scene << "\", \"objects\": " << o.Objects << ", \"width\": "
+  json << "{\n  \"scene\": \"" << o.Scene << "\", \"triangles\": " << triangles << ", \"width\": "
        << o.Width << ", \"height\": " << o.Height << ", \"resolution\": " << o.Resolution
        << ", \"frames\": " << o.Frames << ",\n  \"renderer\": \"" << RendererName(window)
        << "\",\n  \"median_ms\": {\n";
