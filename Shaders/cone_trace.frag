@@ -1,20 +1,19 @@
 //VTK::System::Dec
-// Per-pixel voxel cone tracing and composite. From the G-buffer it reconstructs each pixel's
-// position (depth) in grid coordinates, traces diffuse cones over the normal's hemisphere,
-// one specular cone whose aperture follows the specular power, and a narrow cone toward each
-// light for soft shadows. VTK's shaded colour is kept as the direct term: the part of each
-// shadowed light's contribution (VTK's Phong model) that the cone finds occluded is removed;
-// indirect diffuse x albedo and indirect specular are added; AO darkens the direct term.
+// Per-pixel voxel cone tracing, at the trace resolution (possibly below the image's). From
+// the G-buffer it reconstructs each pixel's position in grid coordinates, traces diffuse
+// cones over the normal's hemisphere (indirect diffuse and AO), one specular cone whose
+// aperture follows the specular power, and a narrow cone toward each light for soft shadows.
+// Outputs: 0 = indirect light (diffuse x albedo + specular) and AO, 1 = the part of VTK's
+// direct shading (Phong, per shadowed light) that the shadow cones find occluded.
+// composite.frag upsamples these and composites them with VTK's shading.
 in vec2 texCoord;
 
 #include "lights.glsl"
 #include "cone_tracing.glsl"
+#include "gbuffer_position.glsl"
 
-uniform sampler2D gbufferColor;
 uniform sampler2D gbufferNormal;
 uniform sampler2D gbufferMaterial;
-uniform sampler2D gbufferDepth;
-uniform mat4 voxelFromNDC;      // normalized device coordinates -> grid coordinates
 uniform mat3 normalToGrid;      // view-space normals -> grid directions
 uniform vec3 coneDirections[16];
 uniform int coneCount;
@@ -24,11 +23,9 @@ uniform float startOffset;      // voxels along the normal, against self-illumin
 uniform float indirectIntensity;
 uniform float specularIntensity;
 uniform int specularCone;
-uniform float aoStrength;
 uniform float aoFalloff;
 uniform int coneShadows;
 uniform float shadowTanHalf;
-uniform int compositeView;      // 0 composite, 1 direct only, 2 indirect only, 3 AO only
 
 //VTK::Output::Dec
 
@@ -40,20 +37,17 @@ float specularTanHalf(float power)
 
 void main()
 {
-  vec4 color = texture(gbufferColor, texCoord);
   float depth = texture(gbufferDepth, texCoord).r;
   if (depth >= 1.0)
   {
-    gl_FragData[0] = compositeView == 0 || compositeView == 1 ? color : vec4(compositeView == 3 ? vec3(1.0) : vec3(0.0), color.a);
-    gl_FragData[1] = vec4(0.0, 0.0, 0.0, 1.0);
+    gl_FragData[0] = vec4(0.0, 0.0, 0.0, 1.0);
+    gl_FragData[1] = vec4(0.0);
     return;
   }
-  vec2 ndc = texCoord * 2.0 - 1.0;
-  vec4 ph = voxelFromNDC * vec4(ndc, depth * 2.0 - 1.0, 1.0);
-  vec3 p = ph.xyz / ph.w;
-  vec4 nearH = voxelFromNDC * vec4(ndc, -1.0, 1.0);
-  vec4 farH = voxelFromNDC * vec4(ndc, 1.0, 1.0);
-  vec3 viewDir = normalize(farH.xyz / farH.w - nearH.xyz / nearH.w);
+  vec3 p = gbufferGridPosition(texCoord, depth);
+  vec3 nearP = gbufferGridPosition(texCoord, 0.0);
+  vec3 farP = gbufferGridPosition(texCoord, 1.0);
+  vec3 viewDir = normalize(farP - nearP);
 
   vec4 normalSpec = texture(gbufferNormal, texCoord);
   vec3 n = normalSpec.xyz;
@@ -99,7 +93,7 @@ void main()
       voxelConeTrace(origin, r, specularTanHalf(normalSpec.w), 1.0, maxDistance, 0.0, p, n, ignored).rgb;
   }
 
-  vec3 direct = color.rgb;
+  vec3 shadowed = vec3(0.0);
   if (coneShadows != 0)
   {
     for (int l = 0; l < voxelLightInfo.x; ++l)
@@ -125,28 +119,12 @@ void main()
       float shadow;
       voxelConeTrace(origin, toLight, shadowTanHalf, start, end, 0.0, p, n, shadow);
       float sf = attenuation * pow(max(dot(reflect(-toLight, n), -viewDir), 0.0), normalSpec.w);
-      vec3 contribution = (df * albedo + sf * specular) * voxelLights[l].color.rgb;
-      direct -= shadow * contribution;
+      shadowed += shadow * (df * albedo + sf * specular) * voxelLights[l].color.rgb;
     }
-    direct = max(direct, vec3(0.0));
   }
-  direct *= mix(1.0, ao, aoStrength);
-
-  vec3 result = direct + indirect;
-  if (compositeView == 1)
-  {
-    result = direct;
-  }
-  else if (compositeView == 2)
-  {
-    result = indirect;
-  }
-  else if (compositeView == 3)
-  {
-    result = vec3(ao);
-  }
-  // Never let a non-finite value through to the image.
-  result = (any(isnan(result)) || any(isinf(result))) ? vec3(0.0) : result;
-  gl_FragData[0] = vec4(result, color.a);
-  gl_FragData[1] = vec4(indirect, ao);
+  // Never let a non-finite value through.
+  bool finite = !any(isnan(indirect)) && !any(isinf(indirect)) && !any(isnan(shadowed)) &&
+    !any(isinf(shadowed)) && !isnan(ao);
+  gl_FragData[0] = finite ? vec4(indirect, clamp(ao, 0.0, 1.0)) : vec4(0.0, 0.0, 0.0, 1.0);
+  gl_FragData[1] = finite ? vec4(shadowed, 1.0) : vec4(0.0);
 }

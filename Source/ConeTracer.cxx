@@ -22,6 +22,10 @@
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
+#include <algorithm>
+#include <cmath>
+#include <type_traits>
+
 namespace voxelgi
 {
 
@@ -43,11 +47,12 @@ vtkShaderProgram* ReadyQuad(
   return (quad->Program && quad->Program->GetCompiled()) ? quad->Program : nullptr;
 }
 
-vtkSmartPointer<vtkTextureObject> NewFloatTexture(vtkOpenGLRenderWindow* renWin, int w, int h)
+vtkSmartPointer<vtkTextureObject> NewFloatTexture(
+  vtkOpenGLRenderWindow* renWin, int w, int h, int internalFormat)
 {
   auto texture = vtkSmartPointer<vtkTextureObject>::New();
   texture->SetContext(renWin);
-  texture->SetInternalFormat(GL_RGBA32F);
+  texture->SetInternalFormat(internalFormat);
   texture->SetFormat(GL_RGBA);
   texture->SetMinificationFilter(vtkTextureObject::Nearest);
   texture->SetMagnificationFilter(vtkTextureObject::Nearest);
@@ -66,28 +71,34 @@ void ConeTracer::Trace(vtkRenderer* renderer, const VoxelGrid& grid, const GBuff
   auto* renWin = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
   const int w = gbuffer.Color->GetWidth();
   const int h = gbuffer.Color->GetHeight();
+  const int tw = std::max(1, static_cast<int>(std::ceil(w * settings.Scale)));
+  const int th = std::max(1, static_cast<int>(std::ceil(h * settings.Scale)));
   if (!this->Framebuffer)
   {
-    this->Composite = NewFloatTexture(renWin, w, h);
-    this->Indirect = NewFloatTexture(renWin, w, h);
+    this->TraceIndirect = NewFloatTexture(renWin, tw, th, GL_RGBA16F);
+    this->TraceShadowed = NewFloatTexture(renWin, tw, th, GL_RGBA16F);
+    this->Composite = NewFloatTexture(renWin, w, h, GL_RGBA32F);
+    this->Indirect = NewFloatTexture(renWin, w, h, GL_RGBA32F);
     this->Framebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
     this->Framebuffer->SetContext(renWin);
   }
+  this->TraceIndirect->Resize(tw, th);
+  this->TraceShadowed->Resize(tw, th);
   this->Composite->Resize(w, h);
   this->Indirect->Resize(w, h);
 
-  vtkShaderProgram* program = ReadyQuad(this->TraceQuad, renWin, shaders::cone_trace_frag);
-  if (!program)
+  vtkShaderProgram* trace = ReadyQuad(this->TraceQuad, renWin, shaders::cone_trace_frag);
+  if (!trace)
   {
     return;
   }
-  glUniformBlockBinding(program->GetHandle(),
-    glGetUniformBlockIndex(program->GetHandle(), "VoxelLightBlock"), VoxelLights::Binding);
+  glUniformBlockBinding(trace->GetHandle(),
+    glGetUniformBlockIndex(trace->GetHandle(), "VoxelLightBlock"), VoxelLights::Binding);
 
   // NDC -> grid coordinates (composed in double, see GridFromNDC) and view normals -> grid.
   float gridFromNDC[16];
   GridFromNDC(renderer, grid, gridFromNDC);
-  program->SetUniformMatrix4x4("voxelFromNDC", gridFromNDC);
+  trace->SetUniformMatrix4x4("voxelFromNDC", gridFromNDC);
   vtkMatrix4x4* view = renderer->GetActiveCamera()->GetViewTransformMatrix();
   float normalToGrid[9];
   for (int r = 0; r < 3; ++r)
@@ -98,58 +109,84 @@ void ConeTracer::Trace(vtkRenderer* renderer, const VoxelGrid& grid, const GBuff
       normalToGrid[c * 3 + r] = static_cast<float>(view->GetElement(c, r));
     }
   }
-  program->SetUniformMatrix3x3("normalToGrid", normalToGrid);
+  trace->SetUniformMatrix3x3("normalToGrid", normalToGrid);
 
   SamplerBindings samplers(renWin);
   SetConeTracingSamplers(samplers, lighting.Radiance, mips, 0.0f, cones.StepFactor,
-    [program](const char* name, auto value) {
+    [trace](const char* name, auto value) {
       if constexpr (std::is_same_v<decltype(value), int>)
       {
-        program->SetUniformi(name, value);
+        trace->SetUniformi(name, value);
       }
       else
       {
-        program->SetUniformf(name, value);
+        trace->SetUniformf(name, value);
       }
     });
   gbuffer.Color->Activate();
   gbuffer.Normal->Activate();
   gbuffer.Material->Activate();
   gbuffer.Depth->Activate();
-  program->SetUniformi("gbufferColor", gbuffer.Color->GetTextureUnit());
-  program->SetUniformi("gbufferNormal", gbuffer.Normal->GetTextureUnit());
-  program->SetUniformi("gbufferMaterial", gbuffer.Material->GetTextureUnit());
-  program->SetUniformi("gbufferDepth", gbuffer.Depth->GetTextureUnit());
-  program->SetUniform3fv("coneDirections", cones.Count, cones.Directions);
-  program->SetUniformi("coneCount", cones.Count);
-  program->SetUniformf("diffuseTanHalf", cones.TanHalf);
-  program->SetUniformf("maxDistance", cones.MaxDistance);
-  program->SetUniformf("startOffset", settings.StartOffset);
-  program->SetUniformf("indirectIntensity", settings.IndirectIntensity);
-  program->SetUniformf("specularIntensity", settings.SpecularIntensity);
-  program->SetUniformi("specularCone", settings.SpecularCone ? 1 : 0);
-  program->SetUniformf("aoStrength", settings.AOStrength);
-  program->SetUniformf("aoFalloff", settings.AOFalloff);
-  program->SetUniformi("coneShadows", settings.ConeShadows ? 1 : 0);
-  program->SetUniformf("shadowTanHalf", settings.ShadowTanHalf);
-  program->SetUniformi("compositeView", settings.View);
+  trace->SetUniformi("gbufferNormal", gbuffer.Normal->GetTextureUnit());
+  trace->SetUniformi("gbufferMaterial", gbuffer.Material->GetTextureUnit());
+  trace->SetUniformi("gbufferDepth", gbuffer.Depth->GetTextureUnit());
+  trace->SetUniform3fv("coneDirections", cones.Count, cones.Directions);
+  trace->SetUniformi("coneCount", cones.Count);
+  trace->SetUniformf("diffuseTanHalf", cones.TanHalf);
+  trace->SetUniformf("maxDistance", cones.MaxDistance);
+  trace->SetUniformf("startOffset", settings.StartOffset);
+  trace->SetUniformf("indirectIntensity", settings.IndirectIntensity);
+  trace->SetUniformf("specularIntensity", settings.SpecularIntensity);
+  trace->SetUniformi("specularCone", settings.SpecularCone ? 1 : 0);
+  trace->SetUniformf("aoFalloff", settings.AOFalloff);
+  trace->SetUniformi("coneShadows", settings.ConeShadows ? 1 : 0);
+  trace->SetUniformf("shadowTanHalf", settings.ShadowTanHalf);
 
-  this->Framebuffer->SaveCurrentBindingsAndBuffers();
-  this->Framebuffer->Bind();
-  this->Framebuffer->AddColorAttachment(0, this->Composite);
-  this->Framebuffer->AddColorAttachment(1, this->Indirect);
-  this->Framebuffer->ActivateDrawBuffers(2);
-  this->Framebuffer->StartNonOrtho(w, h);
   vtkOpenGLState* ostate = renWin->GetState();
   vtkOpenGLState::ScopedglViewport viewport(ostate);
   vtkOpenGLState::ScopedglScissor scissor(ostate);
   vtkOpenGLState::ScopedglEnableDisable depthTest(ostate, GL_DEPTH_TEST);
   vtkOpenGLState::ScopedglEnableDisable blend(ostate, GL_BLEND);
-  ostate->vtkglViewport(0, 0, w, h);
-  ostate->vtkglScissor(0, 0, w, h);
   ostate->vtkglDisable(GL_DEPTH_TEST);
   ostate->vtkglDisable(GL_BLEND);
+  this->Framebuffer->SaveCurrentBindingsAndBuffers();
+  this->Framebuffer->Bind();
+
+  // Trace at the trace resolution.
+  this->Framebuffer->AddColorAttachment(0, this->TraceIndirect);
+  this->Framebuffer->AddColorAttachment(1, this->TraceShadowed);
+  this->Framebuffer->ActivateDrawBuffers(2);
+  this->Framebuffer->StartNonOrtho(tw, th);
+  ostate->vtkglViewport(0, 0, tw, th);
+  ostate->vtkglScissor(0, 0, tw, th);
   this->TraceQuad->Render();
+
+  // Composite at the image's resolution.
+  vtkShaderProgram* composite = ReadyQuad(this->CompositeQuad, renWin, shaders::composite_frag);
+  if (composite)
+  {
+    this->TraceIndirect->Activate();
+    this->TraceShadowed->Activate();
+    composite->SetUniformMatrix4x4("voxelFromNDC", gridFromNDC);
+    composite->SetUniformi("gbufferColor", gbuffer.Color->GetTextureUnit());
+    composite->SetUniformi("gbufferNormal", gbuffer.Normal->GetTextureUnit());
+    composite->SetUniformi("gbufferDepth", gbuffer.Depth->GetTextureUnit());
+    composite->SetUniformi("traceIndirect", this->TraceIndirect->GetTextureUnit());
+    composite->SetUniformi("traceShadowed", this->TraceShadowed->GetTextureUnit());
+    const float traceSize[2] = { static_cast<float>(tw), static_cast<float>(th) };
+    composite->SetUniform2f("traceSize", traceSize);
+    composite->SetUniformf("aoStrength", settings.AOStrength);
+    composite->SetUniformi("compositeView", settings.View);
+    this->Framebuffer->AddColorAttachment(0, this->Composite);
+    this->Framebuffer->AddColorAttachment(1, this->Indirect);
+    this->Framebuffer->ActivateDrawBuffers(2);
+    this->Framebuffer->StartNonOrtho(w, h);
+    ostate->vtkglViewport(0, 0, w, h);
+    ostate->vtkglScissor(0, 0, w, h);
+    this->CompositeQuad->Render();
+    this->TraceShadowed->Deactivate();
+    this->TraceIndirect->Deactivate();
+  }
   this->Framebuffer->UnBind();
   this->Framebuffer->RestorePreviousBindingsAndBuffers();
 
@@ -206,7 +243,7 @@ bool ConeTracer::Read(
 
 void ConeTracer::ReleaseGraphicsResources(vtkWindow* window)
 {
-  for (auto* quad : { &this->TraceQuad, &this->PresentQuad })
+  for (auto* quad : { &this->TraceQuad, &this->CompositeQuad, &this->PresentQuad })
   {
     if (*quad)
     {
@@ -214,7 +251,8 @@ void ConeTracer::ReleaseGraphicsResources(vtkWindow* window)
       quad->reset();
     }
   }
-  for (vtkTextureObject* texture : { this->Composite.Get(), this->Indirect.Get() })
+  for (vtkTextureObject* texture : { this->TraceIndirect.Get(), this->TraceShadowed.Get(),
+         this->Composite.Get(), this->Indirect.Get() })
   {
     if (texture)
     {
@@ -226,7 +264,7 @@ void ConeTracer::ReleaseGraphicsResources(vtkWindow* window)
     this->Framebuffer->ReleaseGraphicsResources(window);
   }
   this->Framebuffer = nullptr;
-  this->Composite = this->Indirect = nullptr;
+  this->TraceIndirect = this->TraceShadowed = this->Composite = this->Indirect = nullptr;
 }
 
 }

@@ -1,8 +1,9 @@
 /**
- * ConeTrace and Composite stages: a full-screen pass over the G-buffer that traces diffuse,
- * specular and shadow cones through the voxel mipmaps and composites them with VTK's shading
- * into a float image (plus an indirect + AO image), then presents the result into VTK's
- * framebuffer with the scene depth.
+ * ConeTrace and Composite stages: a full-screen pass over the G-buffer, at the trace
+ * resolution, traces diffuse, specular and shadow cones through the voxel mipmaps; a second
+ * one at the image's resolution upsamples that (edge-aware) and composites it with VTK's
+ * shading into a float image (plus an indirect + AO image); Present then draws the result
+ * into VTK's framebuffer with the scene depth.
  */
 #ifndef VoxelGIConeTracer_h
 #define VoxelGIConeTracer_h
@@ -40,7 +41,8 @@ struct TraceSettings
   float AOFalloff = 0.05f;
   bool ConeShadows = true;
   float ShadowTanHalf = 0.05f;
-  int View = 0; // 0 composite, 1 direct, 2 indirect, 3 AO
+  int View = 0;      // 0 composite, 1 direct, 2 indirect, 3 AO
+  float Scale = 1.f; // trace resolution / image resolution
 };
 
 class ConeTracer
@@ -63,9 +65,12 @@ public:
 
 private:
   std::unique_ptr<vtkOpenGLQuadHelper> TraceQuad;
+  std::unique_ptr<vtkOpenGLQuadHelper> CompositeQuad;
   std::unique_ptr<vtkOpenGLQuadHelper> PresentQuad;
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
-  vtkSmartPointer<vtkTextureObject> Composite;
+  vtkSmartPointer<vtkTextureObject> TraceIndirect; // trace resolution
+  vtkSmartPointer<vtkTextureObject> TraceShadowed;
+  vtkSmartPointer<vtkTextureObject> Composite; // image resolution
   vtkSmartPointer<vtkTextureObject> Indirect;
 };
 

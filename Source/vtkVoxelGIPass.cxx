@@ -884,6 +884,7 @@ void vtkVoxelGIPass::TraceFrame(
   trace.ShadowTanHalf =
     static_cast<float>(std::tan(vtkMath::RadiansFromDegrees(0.5 * this->ShadowConeAperture)));
   trace.View = this->DebugView >= DEBUG_VIEW_DIRECT ? this->DebugView - DEBUG_VIEW_DIRECT + 1 : 0;
+  trace.Scale = static_cast<float>(this->TraceResolution);
   in.Lights.Bind();
   in.Tracer.Trace(renderer, in.Grid, in.Frame, in.Lighting, in.Mipmap, in.Cones, trace);
   in.EndStage(STAGE_CONE_TRACE, timed);
@@ -1195,6 +1196,7 @@ void vtkVoxelGIPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ConeStepFactor: " << this->ConeStepFactor << "\n";
   os << indent << "MaxTraceDistance: " << this->MaxTraceDistance << "\n";
   os << indent << "ConeStartOffset: " << this->ConeStartOffset << "\n";
+  os << indent << "TraceResolution: " << this->TraceResolution << "\n";
   os << indent << "IndirectIntensity: " << this->IndirectIntensity << "\n";
   os << indent << "SpecularCone: " << this->SpecularCone << "\n";
   os << indent << "SpecularIntensity: " << this->SpecularIntensity << "\n";
