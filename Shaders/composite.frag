@@ -21,6 +21,8 @@ uniform int compositeView;         // 0 composite, 1 direct only, 2 indirect onl
 void main()
 {
   vec4 color = texture(gbufferColor, texCoord);
+  // VTK's shading of very bright lights can overflow the half-float G-buffer: keep it finite.
+  color.rgb = clamp(mix(color.rgb, vec3(0.0), isnan(color.rgb)), 0.0, 65504.0);
   float depth = texture(gbufferDepth, texCoord).r;
   if (depth >= 1.0)
   {
@@ -77,7 +79,8 @@ void main()
   {
     result = vec3(indirectAO.a);
   }
-  result = (any(isnan(result)) || any(isinf(result))) ? vec3(0.0) : result;
+  // Finite and within the pipeline's half-float range, whatever the lights' intensities.
+  result = (any(isnan(result)) || any(isinf(result))) ? vec3(0.0) : min(result, vec3(65504.0));
   gl_FragData[0] = vec4(result, color.a);
   gl_FragData[1] = indirectAO;
 }

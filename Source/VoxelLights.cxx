@@ -13,19 +13,27 @@
 namespace voxelgi
 {
 
-bool VoxelLights::Gather(vtkRenderer* renderer, const VoxelGrid& grid, int& dropped)
+bool VoxelLights::Gather(vtkRenderer* renderer, const VoxelGrid& grid, int& dropped, int& invalid)
 {
   Block block{};
   int count = 0;
   dropped = 0;
+  invalid = 0;
   this->Used.clear();
   vtkLightCollection* lights = renderer->GetLights();
   vtkCollectionSimpleIterator it;
   lights->InitTraversal(it);
   while (vtkLight* light = lights->GetNextLight(it))
   {
-    if (!light->GetSwitch() || light->GetIntensity() <= 0.0)
+    if (!light->GetSwitch() || light->GetIntensity() == 0.0)
     {
+      continue;
+    }
+    const double* color = light->GetDiffuseColor();
+    if (!(light->GetIntensity() > 0.0) || !std::isfinite(light->GetIntensity()) ||
+      !(color[0] >= 0.0 && color[1] >= 0.0 && color[2] >= 0.0) || !std::isfinite(color[0] + color[1] + color[2]))
+    {
+      ++invalid;
       continue;
     }
     if (count == MaxLights)

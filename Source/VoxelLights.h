@@ -25,8 +25,10 @@ public:
   static constexpr unsigned int Binding = 0; // uniform buffer binding point
 
   /// Gather the lights (call after the renderer updated camera-following lights). Returns
-  /// true when they differ from the last gathered set. Lights beyond MaxLights are dropped.
-  bool Gather(vtkRenderer* renderer, const VoxelGrid& grid, int& dropped);
+  /// true when they differ from the last gathered set. Lights beyond MaxLights are dropped
+  /// (counted in `dropped`), so are lights with a negative or non-finite intensity or colour
+  /// (counted in `invalid`).
+  bool Gather(vtkRenderer* renderer, const VoxelGrid& grid, int& dropped, int& invalid);
   /// Upload and bind to Binding.
   void Bind();
   int GetCount() const { return this->Count; }

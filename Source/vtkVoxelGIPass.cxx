@@ -29,6 +29,8 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
 #include "vtkProperty.h"
 #include "vtkPropCollection.h"
 #include "vtkRenderPassCollection.h"
@@ -46,7 +48,9 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
+#include <sstream>
 #include <unordered_map>
 #include <vector>
 
@@ -144,6 +148,7 @@ struct vtkVoxelGIPass::Internals
   bool Traced = false;
   bool WarnedLights = false;
   bool WarnedUnlit = false;
+  bool WarnedInvalidLights = false;
   std::size_t WarnedLeftOut = 0;
   bool AnySpecular = false;
   bool InvalidateRequested = false;
@@ -214,8 +219,15 @@ void vtkVoxelGIPass::SetVoxelResolution(int resolution)
   const int clamped = voxelgi::ClampResolution(resolution, MinResolution, MaxResolution);
   if (clamped != resolution)
   {
-    vtkWarningMacro(<< "VoxelResolution " << resolution
-                    << " is not a power of two in [16, 512]; using " << clamped << ".");
+    std::ostringstream message;
+    message << "VoxelResolution " << resolution << " is not a power of two in [16, 512]";
+    if (resolution > MaxResolution)
+    {
+      message << " (it would need "
+              << voxelgi::Voxelizer::RequiredBytes(resolution, false) / (1024 * 1024)
+              << " MiB of voxel memory)";
+    }
+    vtkWarningMacro(<< message.str() << "; using " << clamped << ".");
   }
   if (clamped != this->VoxelResolution)
   {
@@ -349,6 +361,13 @@ bool vtkVoxelGIPass::CheckContext(vtkRenderWindow* renWin)
   GLint major = 0, minor = 0;
   glGetIntegerv(GL_MAJOR_VERSION, &major);
   glGetIntegerv(GL_MINOR_VERSION, &minor);
+  // VOXELGI_SIMULATE_GL_VERSION=3.2 makes the check see an older context (for tests).
+  if (const char* simulated = std::getenv("VOXELGI_SIMULATE_GL_VERSION"))
+  {
+    major = std::atoi(simulated);
+    const char* dot = std::strchr(simulated, '.');
+    minor = dot ? std::atoi(dot + 1) : 0;
+  }
   in.ContextChecked = true;
   in.ContextOk = major > 4 || (major == 4 && minor >= 3);
   in.HasConservativeRaster = voxelgi::HasExtension("GL_NV_conservative_raster");
@@ -523,9 +542,13 @@ bool vtkVoxelGIPass::UpdateVoxels(const vtkRenderState* s, bool& changed)
     ActorRecord record;
     record.Actor = actor;
     record.Signature = ActorSignature(actor);
+    auto found = previous.find(actor);
+    if (found == previous.end() || record.Signature > found->second.Signature)
+    {
+      this->ReportNonFinitePoints(actor); // new or changed input: check it once
+    }
     record.Emission = PropEmission(actor);
     record.UserDynamic = PropUserDynamic(actor);
-    auto found = previous.find(actor);
     record.Dynamic = record.UserDynamic || (found != previous.end() && found->second.Dynamic);
     for (int i = 0; i < 3; ++i)
     {
@@ -666,6 +689,30 @@ bool vtkVoxelGIPass::UpdateVoxels(const vtkRenderState* s, bool& changed)
 }
 
 //------------------------------------------------------------------------------
+void vtkVoxelGIPass::ReportNonFinitePoints(vtkActor* actor)
+{
+  vtkPolyData* poly = vtkPolyData::SafeDownCast(actor->GetMapper()->GetInputDataObject(0, 0));
+  vtkPoints* points = poly ? poly->GetPoints() : nullptr;
+  if (!points)
+  {
+    return;
+  }
+  vtkIdType bad = 0;
+  double p[3];
+  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+  {
+    points->GetPoint(i, p);
+    bad += (std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])) ? 0 : 1;
+  }
+  if (bad > 0)
+  {
+    vtkWarningMacro(<< "An actor has " << bad << " of " << points->GetNumberOfPoints()
+                    << " points with NaN or Inf coordinates; its triangles that use them are "
+                       "not voxelized.");
+  }
+}
+
+//------------------------------------------------------------------------------
 bool vtkVoxelGIPass::UpdateRadiance(vtkRenderer* renderer, bool voxelsChanged, bool& changed)
 {
   Internals& in = *this->Internal;
@@ -679,8 +726,14 @@ bool vtkVoxelGIPass::UpdateRadiance(vtkRenderer* renderer, bool voxelsChanged, b
     renderer->CreateLight();
   }
   renderer->UpdateLightsGeometryToFollowCamera();
-  int dropped = 0;
-  const bool lightsChanged = in.Lights.Gather(renderer, in.Grid, dropped);
+  int dropped = 0, invalid = 0;
+  const bool lightsChanged = in.Lights.Gather(renderer, in.Grid, dropped, invalid);
+  if (invalid > 0 && !in.WarnedInvalidLights)
+  {
+    vtkWarningMacro(<< invalid << " light(s) with a negative or non-finite intensity or colour "
+                                   "are left out of the GI.");
+    in.WarnedInvalidLights = true;
+  }
   if (dropped > 0 && !in.WarnedLights)
   {
     vtkWarningMacro(<< "Voxel GI uses the first " << voxelgi::VoxelLights::MaxLights

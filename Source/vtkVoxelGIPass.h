@@ -42,6 +42,7 @@
 
 #include <memory> // for std::unique_ptr
 
+class vtkActor;
 class vtkFloatArray;
 class vtkImageData;
 class vtkInformationDoubleVectorKey;
@@ -501,6 +502,8 @@ protected:
   bool UpdateVoxels(const vtkRenderState* s, bool& changed);
   /// Render the scanned actors into the accumulators (static ones only when `full`).
   void VoxelizeActors(vtkRenderer* renderer, bool full);
+  /// Warn when an actor's input has NaN or Inf point coordinates.
+  void ReportNonFinitePoints(vtkActor* actor);
   /// OpenGL 4.3 available? Reports a missing capability once.
   bool CheckContext(vtkRenderWindow* renWin);
   /// Light the voxels, build the mipmaps and bounce, when voxels, lights or settings changed.
