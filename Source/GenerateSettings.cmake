@@ -1,0 +1,124 @@
+# Generates vtkVoxelGISettings' table and accessors from Source/VoxelGISettings.json, the
+# single list of the pass's settings (script mode: -DINPUT=... -DOUTPUT=...).
+file(READ "${INPUT}" json)
+string(JSON count LENGTH "${json}" settings)
+math(EXPR last "${count} - 1")
+set(entries "")
+set(getters "")
+set(setters "")
+foreach (i RANGE ${last})
+  string(JSON name GET "${json}" settings ${i} name)
+  string(JSON type GET "${json}" settings ${i} type)
+  string(JSON default GET "${json}" settings ${i} default)
+  string(JSON group GET "${json}" settings ${i} group)
+  string(JSON doc GET "${json}" settings ${i} doc)
+  string(JSON min ERROR_VARIABLE no_min GET "${json}" settings ${i} min)
+  string(JSON max ERROR_VARIABLE no_max GET "${json}" settings ${i} max)
+  if (type STREQUAL "bool")
+    set(min 0)
+    set(max 1)
+  endif ()
+  set(values "")
+  string(JSON value_count ERROR_VARIABLE no_values LENGTH "${json}" settings ${i} values)
+  if (NOT no_values AND value_count GREATER 0)
+    math(EXPR last_value "${value_count} - 1")
+    foreach (v RANGE ${last_value})
+      string(JSON label GET "${json}" settings ${i} values ${v})
+      string(APPEND values "${label}|")
+    endforeach ()
+  endif ()
+  string(REPLACE "\"" "\\\"" doc "${doc}")
+  string(APPEND entries
+    "  { \"${name}\", \"${type}\", ${min}, ${max}, ${default}, \"${group}\", \"${values}\", \"${doc}\" },\n")
+  if (type STREQUAL "double")
+    string(APPEND getters "  if (name == \"${name}\") return pass->Get${name}();\n")
+    string(APPEND setters "  if (name == \"${name}\") { pass->Set${name}(value); return true; }\n")
+  else ()
+    string(APPEND getters "  if (name == \"${name}\") return static_cast<double>(pass->Get${name}());\n")
+    string(APPEND setters "  if (name == \"${name}\") { pass->Set${name}(static_cast<int>(std::lround(value))); return true; }\n")
+  endif ()
+endforeach ()
+set(content "// Generated from VoxelGISettings.json by GenerateSettings.cmake. Do not edit.
+#include \"vtkVoxelGISettings.h\"
+#include \"vtkObjectFactory.h\"
+#include \"vtkVoxelGIPass.h\"
+
+#include <cmath>
+#include <string>
+
+namespace
+{
+struct Entry
+{
+  const char* Name;
+  const char* Type;
+  double Minimum;
+  double Maximum;
+  double Default;
+  const char* Group;
+  const char* Values;
+  const char* Documentation;
+};
+const Entry Table[] = {
+${entries}};
+}
+
+vtkStandardNewMacro(vtkVoxelGISettings);
+
+void vtkVoxelGISettings::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  for (const Entry& e : Table)
+  {
+    os << indent << e.Name << \" (\" << e.Type << \", \" << e.Group << \"): default \" << e.Default
+       << \", range [\" << e.Minimum << \", \" << e.Maximum << \"]\\n\";
+  }
+}
+
+int vtkVoxelGISettings::GetNumberOfSettings()
+{
+  return static_cast<int>(sizeof(Table) / sizeof(Table[0]));
+}
+
+#define VOXELGI_FIELD(method, type, field, fallback)                                            \\
+  type vtkVoxelGISettings::method(int i)                                                      \\
+  {                                                                                            \\
+    return (i >= 0 && i < GetNumberOfSettings()) ? Table[i].field : fallback;                  \\
+  }
+VOXELGI_FIELD(GetName, const char*, Name, \"\")
+VOXELGI_FIELD(GetType, const char*, Type, \"\")
+VOXELGI_FIELD(GetMinimum, double, Minimum, 0.0)
+VOXELGI_FIELD(GetMaximum, double, Maximum, 0.0)
+VOXELGI_FIELD(GetDefault, double, Default, 0.0)
+VOXELGI_FIELD(GetGroup, const char*, Group, \"\")
+VOXELGI_FIELD(GetEnumerationValues, const char*, Values, \"\")
+VOXELGI_FIELD(GetDocumentation, const char*, Documentation, \"\")
+#undef VOXELGI_FIELD
+
+double vtkVoxelGISettings::GetValue(vtkVoxelGIPass* pass, const char* setting)
+{
+  const std::string name = setting ? setting : \"\";
+  if (!pass)
+  {
+    return 0.0;
+  }
+${getters}  return 0.0;
+}
+
+bool vtkVoxelGISettings::SetValue(vtkVoxelGIPass* pass, const char* setting, double value)
+{
+  const std::string name = setting ? setting : \"\";
+  if (!pass)
+  {
+    return false;
+  }
+${setters}  return false;
+}
+")
+set(old "")
+if (EXISTS "${OUTPUT}")
+  file(READ "${OUTPUT}" old)
+endif ()
+if (NOT old STREQUAL content)
+  file(WRITE "${OUTPUT}" "${content}")
+endif ()

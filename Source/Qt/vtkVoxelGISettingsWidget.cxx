@@ -1,0 +1,220 @@
+#include "vtkVoxelGISettingsWidget.h"
+
+#include "vtkVoxelGIPass.h"
+#include "vtkVoxelGISettings.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkRenderWindow.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QLabel>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace
+{
+const char* const GroupOrder[] = { "General", "Voxelization", "Lighting", "Cones", "Debug view",
+  "Performance" };
+}
+
+vtkVoxelGISettingsWidget::vtkVoxelGISettingsWidget(QWidget* parent)
+  : QWidget(parent)
+{
+  auto* layout = new QVBoxLayout(this);
+  QMap<QString, QFormLayout*> groups;
+  for (const char* group : GroupOrder)
+  {
+    auto* box = new QGroupBox(QString::fromUtf8(group), this);
+    auto* form = new QFormLayout(box);
+    groups[group] = form;
+    layout->addWidget(box);
+  }
+
+  for (int i = 0; i < vtkVoxelGISettings::GetNumberOfSettings(); ++i)
+  {
+    const QString name = QString::fromUtf8(vtkVoxelGISettings::GetName(i));
+    const QString type = QString::fromUtf8(vtkVoxelGISettings::GetType(i));
+    const double lo = vtkVoxelGISettings::GetMinimum(i);
+    const double hi = vtkVoxelGISettings::GetMaximum(i);
+    QWidget* control = nullptr;
+    if (type == "bool")
+    {
+      auto* check = new QCheckBox(this);
+      connect(check, &QCheckBox::toggled, this, [this, name](bool on) { this->apply(name, on); });
+      control = check;
+    }
+    else if (type == "enum")
+    {
+      auto* combo = new QComboBox(this);
+      combo->addItems(QString::fromUtf8(vtkVoxelGISettings::GetEnumerationValues(i))
+                        .split('|', Qt::SkipEmptyParts));
+      connect(combo, QOverload<int>::of(&QComboBox::currentIndexChanged), this,
+        [this, name](int index) { this->apply(name, index); });
+      control = combo;
+    }
+    else if (type == "int")
+    {
+      auto* spin = new QSpinBox(this);
+      spin->setRange(static_cast<int>(lo), static_cast<int>(hi));
+      connect(spin, QOverload<int>::of(&QSpinBox::valueChanged), this,
+        [this, name](int value) { this->apply(name, value); });
+      control = spin;
+    }
+    else
+    {
+      auto* spin = new QDoubleSpinBox(this);
+      spin->setDecimals(3);
+      spin->setRange(lo, hi);
+      spin->setSingleStep((hi - lo) / 100.0);
+      connect(spin, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this,
+        [this, name](double value) { this->apply(name, value); });
+      control = spin;
+    }
+    control->setObjectName(name);
+    control->setToolTip(QString::fromUtf8(vtkVoxelGISettings::GetDocumentation(i)));
+    QFormLayout* form = groups.value(QString::fromUtf8(vtkVoxelGISettings::GetGroup(i)), nullptr);
+    (form ? form : groups["General"])->addRow(name, control);
+    this->Names << name;
+    this->Controls[name] = control;
+  }
+
+  auto* reset = new QPushButton(tr("Reset to defaults"), this);
+  connect(reset, &QPushButton::clicked, this, &vtkVoxelGISettingsWidget::resetToDefaults);
+  layout->addWidget(reset);
+  this->Timings = new QLabel(this);
+  this->Timings->setObjectName("Timings");
+  this->Timings->setTextFormat(Qt::PlainText);
+  layout->addWidget(this->Timings);
+  layout->addStretch();
+
+  this->PassObserver = vtkCallbackCommand::New();
+  this->PassObserver->SetClientData(this);
+  this->PassObserver->SetCallback([](vtkObject*, unsigned long, void* self, void*) {
+    static_cast<vtkVoxelGISettingsWidget*>(self)->updateControls();
+  });
+  this->WindowObserver = vtkCallbackCommand::New();
+  this->WindowObserver->SetClientData(this);
+  this->WindowObserver->SetCallback([](vtkObject*, unsigned long, void* self, void*) {
+    static_cast<vtkVoxelGISettingsWidget*>(self)->updateTimings();
+  });
+  this->setEnabled(false);
+}
+
+vtkVoxelGISettingsWidget::~vtkVoxelGISettingsWidget()
+{
+  this->setPass(nullptr);
+  this->setRenderWindow(nullptr);
+  this->PassObserver->Delete();
+  this->WindowObserver->Delete();
+}
+
+void vtkVoxelGISettingsWidget::setPass(vtkVoxelGIPass* pass)
+{
+  if (this->Pass)
+  {
+    this->Pass->RemoveObserver(this->PassTag);
+    this->Pass->UnRegister(nullptr);
+  }
+  this->Pass = pass;
+  if (pass)
+  {
+    pass->Register(nullptr);
+    this->PassTag = pass->AddObserver(vtkCommand::ModifiedEvent, this->PassObserver);
+  }
+  this->setEnabled(pass != nullptr);
+  this->updateControls();
+}
+
+void vtkVoxelGISettingsWidget::setRenderWindow(vtkRenderWindow* window)
+{
+  if (this->Window)
+  {
+    this->Window->RemoveObserver(this->WindowTag);
+  }
+  this->Window = window;
+  if (window)
+  {
+    this->WindowTag = window->AddObserver(vtkCommand::EndEvent, this->WindowObserver);
+  }
+}
+
+void vtkVoxelGISettingsWidget::apply(const QString& name, double value)
+{
+  if (this->Updating || !this->Pass)
+  {
+    return;
+  }
+  vtkVoxelGISettings::SetValue(this->Pass, name.toUtf8().constData(), value);
+  Q_EMIT this->settingChanged(name, vtkVoxelGISettings::GetValue(this->Pass, name.toUtf8().constData()));
+}
+
+void vtkVoxelGISettingsWidget::updateControls()
+{
+  if (!this->Pass || this->Updating)
+  {
+    return;
+  }
+  // Guard against feedback: setting a control fires its signal, which would set the pass.
+  this->Updating = true;
+  for (const QString& name : this->Names)
+  {
+    const double value = vtkVoxelGISettings::GetValue(this->Pass, name.toUtf8().constData());
+    QWidget* control = this->Controls[name];
+    if (auto* check = qobject_cast<QCheckBox*>(control))
+    {
+      check->setChecked(value != 0.0);
+    }
+    else if (auto* combo = qobject_cast<QComboBox*>(control))
+    {
+      combo->setCurrentIndex(static_cast<int>(std::lround(value)));
+    }
+    else if (auto* spin = qobject_cast<QSpinBox*>(control))
+    {
+      spin->setValue(static_cast<int>(std::lround(value)));
+    }
+    else if (auto* dspin = qobject_cast<QDoubleSpinBox*>(control))
+    {
+      dspin->setValue(value);
+    }
+  }
+  this->Updating = false;
+}
+
+void vtkVoxelGISettingsWidget::resetToDefaults()
+{
+  if (!this->Pass)
+  {
+    return;
+  }
+  for (int i = 0; i < vtkVoxelGISettings::GetNumberOfSettings(); ++i)
+  {
+    vtkVoxelGISettings::SetValue(this->Pass, vtkVoxelGISettings::GetName(i), vtkVoxelGISettings::GetDefault(i));
+  }
+  this->updateControls();
+}
+
+void vtkVoxelGISettingsWidget::updateTimings()
+{
+  if (!this->Pass)
+  {
+    return;
+  }
+  QString text = this->Pass->GetGIActive() ? tr("Last frame:\n") : tr("Last frame: GI not active\n");
+  for (int stage = 0; stage < vtkVoxelGIPass::NUMBER_OF_STAGES; ++stage)
+  {
+    if (this->Pass->GetStageRan(stage))
+    {
+      text += QString("  %1  %2 ms\n")
+                .arg(QString::fromUtf8(vtkVoxelGIPass::GetStageName(stage)), -16)
+                .arg(this->Pass->GetStageTime(stage), 0, 'f', 2);
+    }
+  }
+  this->Timings->setText(text);
+}

@@ -1,0 +1,58 @@
+/**
+ * @class   vtkVoxelGISettings
+ * @brief   The table of vtkVoxelGIPass's settings, and access to them by name.
+ *
+ * Generated at build time from Source/VoxelGISettings.json, the single list of the pass's
+ * settings (name, type, range, default, group, enumeration labels, documentation), which the
+ * C++ setters, the Qt panel and the ParaView XML follow. User interfaces build their controls
+ * from it and read or write a pass's settings with GetValue()/SetValue().
+ *
+ * @sa vtkVoxelGIPass
+ */
+#ifndef vtkVoxelGISettings_h
+#define vtkVoxelGISettings_h
+
+#include "vtkObject.h"
+#include "vtkRenderingVoxelGIModule.h" // for export macro
+
+class vtkVoxelGIPass;
+
+class VTKRENDERINGVOXELGI_EXPORT vtkVoxelGISettings : public vtkObject
+{
+public:
+  static vtkVoxelGISettings* New();
+  vtkTypeMacro(vtkVoxelGISettings, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  static int GetNumberOfSettings();
+  /**
+   * Setting i's name (as in Set<Name>/Get<Name>), type ("bool", "int", "double" or "enum"),
+   * range, default, group, enumeration labels ("A|B|C|", empty unless an enum) and
+   * one-line documentation.
+   */
+  static const char* GetName(int i);
+  static const char* GetType(int i);
+  static double GetMinimum(int i);
+  static double GetMaximum(int i);
+  static double GetDefault(int i);
+  static const char* GetGroup(int i);
+  static const char* GetEnumerationValues(int i);
+  static const char* GetDocumentation(int i);
+
+  /**
+   * Read or write a setting of `pass` by name (integers and booleans rounded); the pass
+   * clamps as its setters do. SetValue returns false for an unknown name.
+   */
+  static double GetValue(vtkVoxelGIPass* pass, const char* name);
+  static bool SetValue(vtkVoxelGIPass* pass, const char* name, double value);
+
+protected:
+  vtkVoxelGISettings() = default;
+  ~vtkVoxelGISettings() override = default;
+
+private:
+  vtkVoxelGISettings(const vtkVoxelGISettings&) = delete;
+  void operator=(const vtkVoxelGISettings&) = delete;
+};
+
+#endif

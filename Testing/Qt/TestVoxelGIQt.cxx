@@ -1,0 +1,130 @@
+// QtTest for the settings panel and the example viewer (under Xvfb, xcb platform):
+// the panel lists exactly the settings table; its controls set the pass; changes of the pass
+// update the controls; reset restores the defaults; and the viewer's render area matches its
+// baseline image (VOXELGI_BASELINE, through vtkTesting, rendered image left in VOXELGI_TEMP).
+#include "VoxelGIViewerWindow.h"
+#include "vtkVoxelGIPass.h"
+#include "vtkVoxelGISettings.h"
+#include "vtkVoxelGISettingsWidget.h"
+
+#include "QVTKOpenGLNativeWidget.h"
+#include "vtkGenericOpenGLRenderWindow.h"
+#include "vtkNew.h"
+#include "vtkTesting.h"
+#include "vtkWindowToImageFilter.h"
+
+#include <QApplication>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QSpinBox>
+#include <QSurfaceFormat>
+#include <QtTest>
+
+class TestVoxelGIQt : public QObject
+{
+  Q_OBJECT
+
+private Q_SLOTS:
+  void panelListsTheSettingsTable()
+  {
+    vtkVoxelGISettingsWidget panel;
+    QStringList table;
+    for (int i = 0; i < vtkVoxelGISettings::GetNumberOfSettings(); ++i)
+    {
+      table << vtkVoxelGISettings::GetName(i);
+    }
+    QCOMPARE(panel.settingNames(), table);
+    QVERIFY(table.contains("VoxelResolution") && table.contains("DebugView"));
+    for (const QString& name : table)
+    {
+      QVERIFY2(!panel.control(name)->toolTip().isEmpty(), qPrintable(name + " has no tooltip"));
+    }
+  }
+
+  void controlsSetThePass()
+  {
+    vtkNew<vtkVoxelGIPass> pass;
+    vtkVoxelGISettingsWidget panel;
+    panel.setPass(pass);
+    qobject_cast<QSpinBox*>(panel.control("Bounces"))->setValue(3);
+    QCOMPARE(pass->GetBounces(), 3);
+    qobject_cast<QCheckBox*>(panel.control("ConeShadows"))->setChecked(false);
+    QCOMPARE(pass->GetConeShadows(), 0);
+    qobject_cast<QComboBox*>(panel.control("DebugView"))->setCurrentIndex(vtkVoxelGIPass::DEBUG_VIEW_INDIRECT);
+    QCOMPARE(pass->GetDebugView(), static_cast<int>(vtkVoxelGIPass::DEBUG_VIEW_INDIRECT));
+    qobject_cast<QDoubleSpinBox*>(panel.control("IndirectIntensity"))->setValue(2.5);
+    QCOMPARE(pass->GetIndirectIntensity(), 2.5);
+    // the spin box follows the setting's range
+    auto* resolution = qobject_cast<QSpinBox*>(panel.control("VoxelResolution"));
+    QCOMPARE(resolution->minimum(), 16);
+    QCOMPARE(resolution->maximum(), 512);
+  }
+
+  void passUpdatesControls()
+  {
+    vtkNew<vtkVoxelGIPass> pass;
+    vtkVoxelGISettingsWidget panel;
+    panel.setPass(pass);
+    pass->SetVoxelResolution(256);
+    pass->SetAmbientOcclusionStrength(0.9);
+    pass->SetLightOcclusionToShadowMaps();
+    pass->EnabledOff();
+    QCOMPARE(qobject_cast<QSpinBox*>(panel.control("VoxelResolution"))->value(), 256);
+    QCOMPARE(qobject_cast<QDoubleSpinBox*>(panel.control("AmbientOcclusionStrength"))->value(), 0.9);
+    QCOMPARE(qobject_cast<QComboBox*>(panel.control("LightOcclusion"))->currentIndex(),
+      static_cast<int>(vtkVoxelGIPass::LIGHT_OCCLUSION_SHADOW_MAPS));
+    QCOMPARE(qobject_cast<QCheckBox*>(panel.control("Enabled"))->isChecked(), false);
+  }
+
+  void resetRestoresDefaults()
+  {
+    vtkNew<vtkVoxelGIPass> pass;
+    vtkVoxelGISettingsWidget panel;
+    panel.setPass(pass);
+    pass->SetBounces(7);
+    pass->SetVoxelResolution(32);
+    panel.resetToDefaults();
+    for (int i = 0; i < vtkVoxelGISettings::GetNumberOfSettings(); ++i)
+    {
+      QCOMPARE(vtkVoxelGISettings::GetValue(pass, vtkVoxelGISettings::GetName(i)),
+        vtkVoxelGISettings::GetDefault(i));
+    }
+    QCOMPARE(qobject_cast<QSpinBox*>(panel.control("Bounces"))->value(), 1);
+  }
+
+  void viewerRenderAreaMatchesBaseline()
+  {
+    VoxelGIViewerWindow viewer;
+    viewer.resize(900, 600);
+    viewer.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&viewer));
+    viewer.renderWindow()->Render();
+    QVERIFY2(viewer.pass()->GetGIActive(), "GI did not run in the viewer");
+    QVERIFY(viewer.settings()->findChild<QWidget*>("Timings") != nullptr);
+
+    vtkNew<vtkWindowToImageFilter> grab;
+    grab->SetInput(viewer.renderWindow());
+    grab->ReadFrontBufferOff();
+    vtkNew<vtkTesting> testing;
+    const QByteArray baseline = qgetenv("VOXELGI_BASELINE");
+    const QByteArray temporary = qgetenv("VOXELGI_TEMP");
+    for (const char* arg : { "-V", baseline.constData(), "-T", temporary.constData() })
+    {
+      testing->AddArgument(arg);
+    }
+    QCOMPARE(testing->RegressionTest(grab, 10.0), static_cast<int>(vtkTesting::PASSED));
+  }
+};
+
+int main(int argc, char* argv[])
+{
+  QSurfaceFormat format = QVTKOpenGLNativeWidget::defaultFormat();
+  format.setVersion(4, 5);
+  QSurfaceFormat::setDefaultFormat(format);
+  QApplication app(argc, argv);
+  TestVoxelGIQt test;
+  return QTest::qExec(&test, argc, argv);
+}
+
+#include "TestVoxelGIQt.moc"
