@@ -2,8 +2,8 @@
 // never crash, never let a NaN or Inf reach the composited image or the radiance volume,
 // and keep VTK's own image when GI cannot run.
 //
-//   TestStiffCases            all cases
 //   TestStiffCases <case>     one case (CTest runs each as VoxelGI::Stiff.<case>)
+//   TestStiffCases            all cases in one process
 #include "VoxelGITestUtilities.h"
 #include "vtkVoxelGIPass.h"
 #include "vtkVoxelGIScenes.h"

@@ -1,0 +1,106 @@
+# Generates the ParaView server-manager XML of the Voxel GI render view from
+# Source/VoxelGISettings.json (script mode: -DINPUT=... -DOUTPUT=...). Every setting becomes a
+# property of the pass proxy, exposed on the view, grouped, with its range domain, its
+# documentation, "advanced" visibility where the table says so, and hidden while GI is off.
+file(READ "${INPUT}" json)
+string(JSON count LENGTH "${json}" settings)
+math(EXPR last "${count} - 1")
+set(properties "")
+set(groups_order General Voxelization Lighting Cones "Debug view" Performance)
+foreach (group IN LISTS groups_order)
+  set(exposed_${group} "")
+endforeach ()
+foreach (i RANGE ${last})
+  string(JSON name GET "${json}" settings ${i} name)
+  string(JSON type GET "${json}" settings ${i} type)
+  string(JSON default GET "${json}" settings ${i} default)
+  string(JSON group GET "${json}" settings ${i} group)
+  string(JSON doc GET "${json}" settings ${i} doc)
+  string(JSON min ERROR_VARIABLE no_min GET "${json}" settings ${i} min)
+  string(JSON max ERROR_VARIABLE no_max GET "${json}" settings ${i} max)
+  string(JSON advanced ERROR_VARIABLE no_advanced GET "${json}" settings ${i} advanced)
+  set(visibility "")
+  if (NOT no_advanced AND advanced)
+    set(visibility " panel_visibility=\"advanced\"")
+  endif ()
+  if (type STREQUAL "double")
+    set(element "DoubleVectorProperty")
+    set(domain "<DoubleRangeDomain name=\"range\" min=\"${min}\" max=\"${max}\" />")
+  elseif (type STREQUAL "bool")
+    set(element "IntVectorProperty")
+    set(domain "<BooleanDomain name=\"bool\" />")
+  elseif (type STREQUAL "enum")
+    set(element "IntVectorProperty")
+    set(domain "<EnumerationDomain name=\"enum\">")
+    string(JSON value_count LENGTH "${json}" settings ${i} values)
+    math(EXPR last_value "${value_count} - 1")
+    foreach (v RANGE ${last_value})
+      string(JSON label GET "${json}" settings ${i} values ${v})
+      string(APPEND domain "\n          <Entry text=\"${label}\" value=\"${v}\" />")
+    endforeach ()
+    string(APPEND domain "\n        </EnumerationDomain>")
+  else ()
+    set(element "IntVectorProperty")
+    set(domain "<IntRangeDomain name=\"range\" min=\"${min}\" max=\"${max}\" />")
+  endif ()
+  string(APPEND properties "      <${element} name=\"${name}\" command=\"Set${name}\" number_of_elements=\"1\" default_values=\"${default}\"${visibility}>
+        ${domain}
+        <Documentation>${doc}</Documentation>
+      </${element}>
+")
+  # On the view, "Enabled" reads "EnableVoxelGI"; other settings keep their names. Settings
+  # other than the switch itself are hidden while GI is off.
+  if (name STREQUAL "Enabled")
+    set(exposed "          <Property name=\"Enabled\" exposed_name=\"EnableVoxelGI\" />\n")
+  else ()
+    set(exposed "          <Property name=\"${name}\">
+            <Hints>
+              <PropertyWidgetDecorator type=\"GenericDecorator\" mode=\"visibility\" property=\"EnableVoxelGI\" value=\"1\" />
+            </Hints>
+          </Property>
+")
+  endif ()
+  string(APPEND exposed_${group} "${exposed}")
+endforeach ()
+
+set(exposed_groups "")
+foreach (group IN LISTS groups_order)
+  if (NOT exposed_${group} STREQUAL "")
+    string(APPEND exposed_groups "        <PropertyGroup label=\"Voxel GI: ${group}\">
+${exposed_${group}}        </PropertyGroup>
+")
+  endif ()
+endforeach ()
+
+set(content "<!-- Generated from Source/VoxelGISettings.json by Plugin/GenerateViewXML.cmake. -->
+<ServerManagerConfiguration>
+  <ProxyGroup name=\"voxelgi\">
+    <Proxy name=\"VoxelGIPass\" class=\"vtkVoxelGIPass\" label=\"Voxel GI\"
+           processes=\"client|renderserver|dataserver\">
+      <Documentation>Voxel global illumination render pass (deferred voxel shading).</Documentation>
+${properties}    </Proxy>
+  </ProxyGroup>
+  <ProxyGroup name=\"views\">
+    <RenderViewProxy name=\"VoxelGIRenderView\" class=\"vtkPVVoxelGIView\"
+        label=\"Render View (Voxel GI)\" processes=\"client|renderserver|dataserver\"
+        base_proxygroup=\"views\" base_proxyname=\"RenderView\">
+      <Documentation>
+        A render view with real-time voxel global illumination: indirect diffuse and specular
+        light, ambient occlusion and soft shadows from cone tracing voxelized geometry.
+      </Documentation>
+      <SubProxy command=\"SetGIPass\">
+        <Proxy name=\"VoxelGI\" proxygroup=\"voxelgi\" proxyname=\"VoxelGIPass\" />
+        <ExposedProperties>
+${exposed_groups}        </ExposedProperties>
+      </SubProxy>
+    </RenderViewProxy>
+  </ProxyGroup>
+</ServerManagerConfiguration>
+")
+set(old "")
+if (EXISTS "${OUTPUT}")
+  file(READ "${OUTPUT}" old)
+endif ()
+if (NOT old STREQUAL content)
+  file(WRITE "${OUTPUT}" "${content}")
+endif ()
