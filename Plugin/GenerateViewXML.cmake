@@ -6,6 +6,7 @@ file(READ "${INPUT}" json)
 string(JSON count LENGTH "${json}" settings)
 math(EXPR last "${count} - 1")
 set(properties "")
+set(exposed_information "")
 set(groups_order General Voxelization Lighting Cones "Debug view" Performance)
 foreach (group IN LISTS groups_order)
   set(exposed_${group} "")
@@ -43,10 +44,12 @@ foreach (i RANGE ${last})
     set(element "IntVectorProperty")
     set(domain "<IntRangeDomain name=\"range\" min=\"${min}\" max=\"${max}\" />")
   endif ()
+  # the setting, and an information-only twin that reads the pass back
   string(APPEND properties "      <${element} name=\"${name}\" command=\"Set${name}\" number_of_elements=\"1\" default_values=\"${default}\"${visibility}>
         ${domain}
         <Documentation>${doc}</Documentation>
       </${element}>
+      <${element} name=\"${name}Info\" command=\"Get${name}\" information_only=\"1\" />
 ")
   # On the view, "Enabled" reads "EnableVoxelGI"; other settings keep their names. Settings
   # other than the switch itself are hidden while GI is off.
@@ -61,9 +64,10 @@ foreach (i RANGE ${last})
 ")
   endif ()
   string(APPEND exposed_${group} "${exposed}")
+  string(APPEND exposed_information "          <Property name=\"${name}Info\" />\n")
 endforeach ()
 
-set(exposed_groups "")
+set(exposed_groups "${exposed_information}          <Property name=\"GIActive\" />\n")
 foreach (group IN LISTS groups_order)
   if (NOT exposed_${group} STREQUAL "")
     string(APPEND exposed_groups "        <PropertyGroup label=\"Voxel GI: ${group}\">
@@ -78,7 +82,8 @@ set(content "<!-- Generated from Source/VoxelGISettings.json by Plugin/GenerateV
     <Proxy name=\"VoxelGIPass\" class=\"vtkVoxelGIPass\" label=\"Voxel GI\"
            processes=\"client|renderserver|dataserver\">
       <Documentation>Voxel global illumination render pass (deferred voxel shading).</Documentation>
-${properties}    </Proxy>
+${properties}      <IntVectorProperty name=\"GIActive\" command=\"GetGIActive\" information_only=\"1\" />
+    </Proxy>
   </ProxyGroup>
   <ProxyGroup name=\"views\">
     <RenderViewProxy name=\"VoxelGIRenderView\" class=\"vtkPVVoxelGIView\"

@@ -2,6 +2,7 @@
 
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
 #include "vtkTextureUnitManager.h"
 #include "vtk_glew.h"
 
@@ -199,7 +200,8 @@ int Volume3D::BindSampler(vtkOpenGLRenderWindow* renWin) const
   const int unit = renWin->GetTextureUnitManager()->Allocate();
   if (unit >= 0)
   {
-    glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
+    // Through VTK's state cache, which tracks the active unit.
+    renWin->GetState()->vtkglActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
     glBindTexture(GL_TEXTURE_3D, this->Handle);
   }
   return unit;
@@ -231,7 +233,7 @@ SamplerBindings::~SamplerBindings()
 {
   for (int i = this->Count - 1; i >= 0; --i)
   {
-    glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(this->Units[i]));
+    this->Window->GetState()->vtkglActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(this->Units[i]));
     glBindTexture(this->Targets[i], 0);
     this->Window->GetTextureUnitManager()->Free(this->Units[i]);
   }
@@ -371,7 +373,7 @@ int ShadowMapArray::BindSampler(vtkOpenGLRenderWindow* renWin) const
   const int unit = renWin->GetTextureUnitManager()->Allocate();
   if (unit >= 0)
   {
-    glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
+    renWin->GetState()->vtkglActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
     glBindTexture(GL_TEXTURE_2D_ARRAY, this->Texture);
   }
   return unit;

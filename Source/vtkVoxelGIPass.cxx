@@ -509,6 +509,13 @@ bool vtkVoxelGIPass::UpdateVoxels(const vtkRenderState* s, bool& changed)
     {
       continue;
     }
+    // Empty props (e.g. ParaView's selection and axes actors) are neither voxelized nor worth a
+    // warning.
+    const double* propBounds = prop->GetBounds();
+    if (!propBounds || !vtkMath::AreBoundsInitialized(propBounds))
+    {
+      continue;
+    }
     vtkActor* actor = vtkActor::SafeDownCast(prop);
     if (!actor)
     {
@@ -521,17 +528,12 @@ bool vtkVoxelGIPass::UpdateVoxels(const vtkRenderState* s, bool& changed)
       ++leftOut;
       continue;
     }
-    actor->GetMapper()->Update();
     if (!actor->HasOpaqueGeometry())
     {
       ++leftOut; // translucent
       continue;
     }
-    const double* b = actor->GetBounds();
-    if (!b || !vtkMath::AreBoundsInitialized(b))
-    {
-      continue;
-    }
+    const double* b = propBounds;
     if (!std::all_of(b, b + 6, [](double v) { return std::isfinite(v); }))
     {
       vtkWarningMacro(<< "An actor has non-finite bounds (NaN or Inf coordinates); it is left "

@@ -1,0 +1,47 @@
+/**
+ * @class   vtkPVVoxelGIView
+ * @brief   ParaView render view with voxel global illumination.
+ *
+ * A vtkPVRenderView that renders its geometry through a vtkVoxelGIPass. The pass is a
+ * sub-proxy of the view ("Render View (Voxel GI)"), so its settings are properties of the
+ * view, generated from the settings table.
+ *
+ * Client/server: in the builtin session (client and server in one process) the pass sees all
+ * the geometry. With several render-server ranks, each rank currently voxelizes and lights
+ * only its own piece, so indirect light between pieces on different ranks is missing; the
+ * plan is to merge the voxel grids across ranks (MPI reduction of the voxelization sums and
+ * of the radiance) before the per-pixel tracing.
+ */
+#ifndef vtkPVVoxelGIView_h
+#define vtkPVVoxelGIView_h
+
+#include "VoxelGIParaViewViewModule.h" // for export macro
+#include "vtkPVRenderView.h"
+
+class vtkVoxelGIPass;
+
+class VOXELGIPARAVIEWVIEW_EXPORT vtkPVVoxelGIView : public vtkPVRenderView
+{
+public:
+  static vtkPVVoxelGIView* New();
+  vtkTypeMacro(vtkPVVoxelGIView, vtkPVRenderView);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * The pass that renders the geometry (the view's "VoxelGI" sub-proxy).
+   */
+  void SetGIPass(vtkVoxelGIPass* pass);
+  vtkGetObjectMacro(GIPass, vtkVoxelGIPass);
+
+protected:
+  vtkPVVoxelGIView();
+  ~vtkPVVoxelGIView() override;
+
+  vtkVoxelGIPass* GIPass = nullptr;
+
+private:
+  vtkPVVoxelGIView(const vtkPVVoxelGIView&) = delete;
+  void operator=(const vtkPVVoxelGIView&) = delete;
+};
+
+#endif
