@@ -1,0 +1,38 @@
+// Error metrics between a rendered image and a reference, both linear RGB (three floats per
+// pixel, rows bottom to top as VTK reads them back). Used to report our error against
+// path-traced references.
+#ifndef VoxelGIImageMetrics_h
+#define VoxelGIImageMetrics_h
+
+#include <vector>
+
+namespace voxelgi
+{
+namespace metrics
+{
+struct Image
+{
+  int Width = 0;
+  int Height = 0;
+  std::vector<float> Rgb; // Width * Height * 3, linear
+};
+
+// Root mean squared error over all pixels and channels.
+double Rmse(const Image& test, const Image& reference);
+
+// Relative MSE: mean of (test - ref)^2 / (ref^2 + 0.01) over pixels and channels, so that
+// dark regions weigh as much as bright ones.
+double RelMse(const Image& test, const Image& reference);
+
+// Mean SSIM (Wang et al. 2004) of the luminance (Rec. 709 weights) of the images clamped to
+// [0, 1], with an 11 x 11 Gaussian window (sigma 1.5), C1 = 0.01^2, C2 = 0.03^2.
+double Ssim(const Image& test, const Image& reference);
+
+// Mean LDR-FLIP (Andersson et al. 2020, "FLIP: A Difference Evaluator for Alternating Images"),
+// on the images clamped to [0, 1], for an observer at `pixelsPerDegree` (67 = 0.7 m from a
+// 0.7 m wide 3840-pixel display, the paper's default). 0 = identical, 1 = maximal.
+double Flip(const Image& test, const Image& reference, double pixelsPerDegree = 67.0);
+}
+}
+
+#endif
