@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <fstream>
 #include <functional>
 #include <stdexcept>
 
@@ -265,6 +266,37 @@ void Features(const Image& im, double ppd, Plane& edges, Plane& points)
 }
 }
 
+bool ReadPfm(const std::string& path, Image& image)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::string magic;
+  double scale = 0.0;
+  in >> magic >> image.Width >> image.Height >> scale;
+  in.get(); // the single whitespace before the data
+  if (!in || magic != "PF" || scale >= 0.0 || image.Width <= 0 || image.Height <= 0)
+  {
+    return false;
+  }
+  image.Rgb.resize(static_cast<std::size_t>(image.Width) * image.Height * 3);
+  in.read(reinterpret_cast<char*>(image.Rgb.data()),
+    static_cast<std::streamsize>(image.Rgb.size() * sizeof(float)));
+  return static_cast<bool>(in);
+}
+
+Image FromRgba(const float* rgba, int width, int height)
+{
+  Image image;
+  image.Width = width;
+  image.Height = height;
+  const std::size_t n = static_cast<std::size_t>(width) * height;
+  image.Rgb.resize(3 * n);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    std::copy(rgba + 4 * i, rgba + 4 * i + 3, image.Rgb.begin() + 3 * i);
+  }
+  return image;
+}
+
 double Rmse(const Image& test, const Image& reference)
 {
   CheckSizes(test, reference);
@@ -344,6 +376,15 @@ double Flip(const Image& test, const Image& reference, double pixelsPerDegree)
     sum += std::pow(colour, 1.0 - feature);
   }
   return sum / labT.size();
+}
+Errors Compare(const Image& test, const Image& reference)
+{
+  Errors e;
+  e.Rmse = Rmse(test, reference);
+  e.RelMse = RelMse(test, reference);
+  e.Ssim = Ssim(test, reference);
+  e.Flip = Flip(test, reference);
+  return e;
 }
 }
 }

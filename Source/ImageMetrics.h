@@ -4,6 +4,7 @@
 #ifndef VoxelGIImageMetrics_h
 #define VoxelGIImageMetrics_h
 
+#include <string>
 #include <vector>
 
 namespace voxelgi
@@ -16,6 +17,13 @@ struct Image
   int Height = 0;
   std::vector<float> Rgb; // Width * Height * 3, linear
 };
+
+// Reads a portable float map ("PF", little endian, rows bottom to top), the format of the
+// path-traced references. False when the file is missing or not such a map.
+bool ReadPfm(const std::string& path, Image& image);
+
+// The RGB part of an RGBA float image (as VTK reads frame buffers back).
+Image FromRgba(const float* rgba, int width, int height);
 
 // Root mean squared error over all pixels and channels.
 double Rmse(const Image& test, const Image& reference);
@@ -32,6 +40,16 @@ double Ssim(const Image& test, const Image& reference);
 // on the images clamped to [0, 1], for an observer at `pixelsPerDegree` (67 = 0.7 m from a
 // 0.7 m wide 3840-pixel display, the paper's default). 0 = identical, 1 = maximal.
 double Flip(const Image& test, const Image& reference, double pixelsPerDegree = 67.0);
+
+// All four metrics of one image against a reference.
+struct Errors
+{
+  double Rmse = 0.0;
+  double RelMse = 0.0;
+  double Ssim = 0.0;
+  double Flip = 0.0;
+};
+Errors Compare(const Image& test, const Image& reference);
 }
 }
 

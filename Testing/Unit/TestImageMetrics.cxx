@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <random>
 
 using voxelgi::metrics::Image;
@@ -105,4 +106,24 @@ TEST(ImageMetrics, MismatchedSizesThrow)
 {
   EXPECT_THROW(voxelgi::metrics::Rmse(Uniform(4, 4, 0, 0, 0), Uniform(4, 5, 0, 0, 0)),
     std::invalid_argument);
+}
+
+TEST(ImageMetrics, FloatMapRoundTripAndRgba)
+{
+  const float rgba[8] = { 0.1f, 0.2f, 0.3f, 1.0f, 4.0f, 5.0f, 6.0f, 0.0f };
+  const Image image = voxelgi::metrics::FromRgba(rgba, 2, 1);
+  ASSERT_EQ(image.Rgb.size(), 6u);
+  EXPECT_FLOAT_EQ(image.Rgb[3], 4.0f); // alpha dropped
+  const std::string path = ::testing::TempDir() + "voxelgi-metrics.pfm";
+  {
+    std::ofstream out(path, std::ios::binary);
+    out << "PF\n2 1\n-1.0\n";
+    out.write(reinterpret_cast<const char*>(image.Rgb.data()), 6 * sizeof(float));
+  }
+  Image read;
+  ASSERT_TRUE(voxelgi::metrics::ReadPfm(path, read));
+  EXPECT_EQ(read.Width, 2);
+  EXPECT_EQ(read.Height, 1);
+  EXPECT_EQ(read.Rgb, image.Rgb);
+  EXPECT_FALSE(voxelgi::metrics::ReadPfm(path + ".missing", read));
 }
