@@ -95,10 +95,4 @@ ${exposed_groups}        </ExposedProperties>
   </ProxyGroup>
 </ServerManagerConfiguration>
 ")
-set(old "")
-if (EXISTS "${OUTPUT}")
-  file(READ "${OUTPUT}" old)
-endif ()
-if (NOT old STREQUAL content)
-  file(WRITE "${OUTPUT}" "${content}")
-endif ()
+voxelgi_write_if_changed("${OUTPUT}" "${content}")

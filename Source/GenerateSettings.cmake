@@ -101,10 +101,4 @@ bool vtkVoxelGISettings::SetValue(vtkVoxelGIPass* pass, const char* setting, dou
 ${setters}  return false;
 }
 ")
-set(old "")
-if (EXISTS "${OUTPUT}")
-  file(READ "${OUTPUT}" old)
-endif ()
-if (NOT old STREQUAL content)
-  file(WRITE "${OUTPUT}" "${content}")
-endif ()
+voxelgi_write_if_changed("${OUTPUT}" "${content}")

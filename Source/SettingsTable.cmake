@@ -1,6 +1,8 @@
 # Reads the settings table, Source/VoxelGISettings.json, for the generators (GenerateSettings.cmake,
 # Plugin/GenerateViewXML.cmake), so that they read it the same way.
 #
+# voxelgi_write_if_changed(<path> <content>): writes only when the content differs, so that
+# what depends on the generated file is not rebuilt for nothing.
 # voxelgi_settings_count(<json> <out>): number of settings.
 # voxelgi_read_setting(<json variable> <i>): sets name, type, default, group, doc, min, max (0 and 1 for
 # bool; empty when the table has none), advanced (TRUE/FALSE) and values (the enumeration's
@@ -40,3 +42,13 @@ macro (voxelgi_read_setting json_var i)
     endforeach ()
   endif ()
 endmacro ()
+
+function (voxelgi_write_if_changed path content)
+  set(old "")
+  if (EXISTS "${path}")
+    file(READ "${path}" old)
+  endif ()
+  if (NOT old STREQUAL content)
+    file(WRITE "${path}" "${content}")
+  endif ()
+endfunction ()
