@@ -283,6 +283,15 @@ bool ReadPfm(const std::string& path, Image& image)
   return static_cast<bool>(in);
 }
 
+bool WritePfm(const std::string& path, const Image& image)
+{
+  std::ofstream out(path, std::ios::binary);
+  out << "PF\n" << image.Width << " " << image.Height << "\n-1.0\n";
+  out.write(reinterpret_cast<const char*>(image.Rgb.data()),
+    static_cast<std::streamsize>(image.Rgb.size() * sizeof(float)));
+  return static_cast<bool>(out);
+}
+
 Image FromRgba(const float* rgba, int width, int height)
 {
   Image image;

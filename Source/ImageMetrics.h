@@ -22,6 +22,9 @@ struct Image
 // path-traced references. False when the file is missing or not such a map.
 bool ReadPfm(const std::string& path, Image& image);
 
+// Writes `image` as such a map (little endian, as the machines we run on). False on failure.
+bool WritePfm(const std::string& path, const Image& image);
+
 // The RGB part of an RGBA float image (as VTK reads frame buffers back).
 Image FromRgba(const float* rgba, int width, int height);
 

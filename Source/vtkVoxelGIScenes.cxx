@@ -3,19 +3,32 @@
 #include "vtkVoxelGIPass.h"
 
 #include "vtkActor.h"
+#include "vtkActorCollection.h"
 #include "vtkCamera.h"
+#include "vtkContourFilter.h"
 #include "vtkCubeSource.h"
+#include "vtkDoubleArray.h"
+#include "vtkElevationFilter.h"
+#include "vtkGlyph3D.h"
 #include "vtkLight.h"
+#include "vtkLookupTable.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPlaneSource.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPointData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
+#include "vtkRTAnalyticSource.h"
 #include "vtkRenderer.h"
+#include "vtkSphereSource.h"
 #include "vtkTransform.h"
 #include "vtkTransformPolyDataFilter.h"
 
 #include <array>
+#include <cmath>
+#include <cstring>
 
 vtkStandardNewMacro(vtkVoxelGIScenes);
 
@@ -23,9 +36,9 @@ namespace
 {
 constexpr double Size = 5.5;
 
-// A quad from `origin` spanned by p1 and p2; its normal (p1 - o) x (p2 - o) faces the inside.
 using Vec3 = std::array<double, 3>;
 
+// A quad from `origin` spanned by p1 and p2; its normal (p1 - o) x (p2 - o) faces the inside.
 vtkActor* AddQuad(vtkRenderer* renderer, const Vec3& o, const Vec3& p1, const Vec3& p2,
   const Vec3& color)
 {
@@ -33,16 +46,11 @@ vtkActor* AddQuad(vtkRenderer* renderer, const Vec3& o, const Vec3& p1, const Ve
   plane->SetOrigin(o[0], o[1], o[2]);
   plane->SetPoint1(p1[0], p1[1], p1[2]);
   plane->SetPoint2(p2[0], p2[1], p2[2]);
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(plane->GetOutputPort());
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  actor->GetProperty()->SetColor(color[0], color[1], color[2]);
-  renderer->AddActor(actor);
-  return actor;
+  return vtkVoxelGIScenes::AddSource(renderer, plane, color[0], color[1], color[2]);
 }
 
-void AddBlock(vtkRenderer* renderer, double cx, double cz, double sx, double sy, double sz,
+// A box standing on y = 0, centred on (cx, cz), turned by `angle` degrees about y.
+vtkActor* AddBlock(vtkRenderer* renderer, double cx, double cz, double sx, double sy, double sz,
   double angle, const Vec3& color)
 {
   vtkNew<vtkCubeSource> cube;
@@ -55,13 +63,74 @@ void AddBlock(vtkRenderer* renderer, double cx, double cz, double sx, double sy,
   vtkNew<vtkTransformPolyDataFilter> place;
   place->SetInputConnection(cube->GetOutputPort());
   place->SetTransform(transform);
+  return vtkVoxelGIScenes::AddSource(renderer, place, color[0], color[1], color[2]);
+}
+
+// Floor, ceiling, back, left and right walls of the box [x0, x1] x [y0, y1] x [z0, z1], open
+// toward +z, normals inward. Returns the floor.
+vtkActor* AddRoom(vtkRenderer* renderer, const Vec3& lo, const Vec3& hi, const Vec3& floor,
+  const Vec3& walls, const Vec3& left, const Vec3& right)
+{
+  vtkActor* floorActor =
+    AddQuad(renderer, lo, { lo[0], lo[1], hi[2] }, { hi[0], lo[1], lo[2] }, floor);
+  AddQuad(renderer, { lo[0], hi[1], lo[2] }, { hi[0], hi[1], lo[2] }, { lo[0], hi[1], hi[2] },
+    walls);
+  AddQuad(renderer, lo, { hi[0], lo[1], lo[2] }, { lo[0], hi[1], lo[2] }, walls);
+  AddQuad(renderer, lo, { lo[0], hi[1], lo[2] }, { lo[0], lo[1], hi[2] }, left);
+  AddQuad(renderer, { hi[0], lo[1], lo[2] }, { hi[0], lo[1], hi[2] }, { hi[0], hi[1], lo[2] },
+    right);
+  return floorActor;
+}
+
+// An emitter: the pass lights the scene with `emission`; VTK draws the surface unlit at that
+// radiance (its ambient colour), so that both see the same surface.
+void MakeEmitter(vtkActor* actor, const Vec3& emission)
+{
+  actor->GetProperty()->SetAmbient(1.0);
+  actor->GetProperty()->SetDiffuse(0.0);
+  actor->GetProperty()->SetAmbientColor(emission[0], emission[1], emission[2]);
+  vtkVoxelGIPass::SetPropEmission(actor, emission[0], emission[1], emission[2]);
+}
+
+// An unattenuated point light (VTK's default attenuation) at `position`.
+void AddPointLight(vtkRenderer* renderer, const Vec3& position, const Vec3& color, double intensity)
+{
+  vtkNew<vtkLight> light;
+  light->SetLightTypeToSceneLight();
+  light->SetPositional(true);
+  light->SetPosition(position[0], position[1], position[2]);
+  light->SetFocalPoint(position[0], position[1] - 1.0, position[2]);
+  light->SetConeAngle(90.0);
+  light->SetColor(color[0], color[1], color[2]);
+  light->SetIntensity(intensity);
+  renderer->AddLight(light);
+}
+
+void AimCamera(vtkRenderer* renderer, const Vec3& position, const Vec3& focalPoint)
+{
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetFocalPoint(focalPoint[0], focalPoint[1], focalPoint[2]);
+  camera->SetPosition(position[0], position[1], position[2]);
+  camera->SetViewUp(0.0, 1.0, 0.0);
+  camera->SetViewAngle(30.0);
+  renderer->ResetCameraClippingRange();
+}
+}
+
+vtkActor* vtkVoxelGIScenes::AddSource(
+  vtkRenderer* renderer, vtkAlgorithm* source, double r, double g, double b)
+{
+  if (!renderer || !source)
+  {
+    return nullptr;
+  }
   vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(place->GetOutputPort());
+  mapper->SetInputConnection(source->GetOutputPort());
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);
-  actor->GetProperty()->SetColor(color[0], color[1], color[2]);
+  actor->GetProperty()->SetColor(r, g, b);
   renderer->AddActor(actor);
-}
+  return actor;
 }
 
 void vtkVoxelGIScenes::AddCornellBox(vtkRenderer* renderer, double panelEmission)
@@ -75,44 +144,170 @@ void vtkVoxelGIScenes::AddCornellBox(vtkRenderer* renderer, double panelEmission
   const Vec3 green{ { 0.1, 0.6, 0.1 } };
   const double S = Size;
 
-  const Vec3 o{ { 0, 0, 0 } };
-  // floor (y = 0, normal +y), ceiling (y = S, normal -y), back wall (z = 0, normal +z)
-  AddQuad(renderer, o, { 0, 0, S }, { S, 0, 0 }, white);
-  AddQuad(renderer, { 0, S, 0 }, { S, S, 0 },
-    { 0, S, S }, white);
-  AddQuad(renderer, o, { S, 0, 0 }, { 0, S, 0 }, white);
-  // left wall (x = 0, normal +x) red; right wall (x = S, normal -x) green
-  AddQuad(renderer, o, { 0, S, 0 }, { 0, 0, S }, red);
-  AddQuad(renderer, { S, 0, 0 }, { S, 0, S },
-    { S, S, 0 }, green);
-
+  AddRoom(renderer, { 0, 0, 0 }, { S, S, S }, white, white, red, green);
   AddBlock(renderer, 3.7, 2.0, 1.65, 1.65, 1.65, -17.0, white);
   AddBlock(renderer, 1.9, 3.4, 1.65, 3.3, 1.65, 15.0, white);
 
   // Emissive ceiling panel, a little below the ceiling, facing down.
   const double a = 0.38 * S, b = 0.62 * S, y = S - 0.01;
-  vtkActor* panel = AddQuad(renderer, { a, y, a }, { b, y, a },
-    { a, y, b }, { 1.0, 1.0, 1.0 });
-  panel->GetProperty()->SetAmbient(1.0);
-  panel->GetProperty()->SetDiffuse(0.0);
-  vtkVoxelGIPass::SetPropEmission(panel, panelEmission, panelEmission, 0.85 * panelEmission);
+  MakeEmitter(AddQuad(renderer, { a, y, a }, { b, y, a }, { a, y, b }, { 1.0, 1.0, 1.0 }),
+    { panelEmission, panelEmission, 0.85 * panelEmission });
 
-  vtkNew<vtkLight> light;
-  light->SetLightTypeToSceneLight();
-  light->SetPositional(true);
-  light->SetPosition(0.5 * S, S - 0.3, 0.5 * S);
-  light->SetFocalPoint(0.5 * S, 0.0, 0.5 * S);
-  light->SetConeAngle(90.0);
-  light->SetColor(1.0, 0.95, 0.85);
-  light->SetIntensity(1.0);
-  renderer->AddLight(light);
+  AddPointLight(renderer, { 0.5 * S, S - 0.3, 0.5 * S }, { 1.0, 0.95, 0.85 }, 1.0);
+  AimCamera(renderer, { 0.5 * S, 0.5 * S, 2.9 * S }, { 0.5 * S, 0.5 * S, 0.5 * S });
+}
 
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->SetFocalPoint(0.5 * S, 0.5 * S, 0.5 * S);
-  camera->SetPosition(0.5 * S, 0.5 * S, 2.9 * S);
-  camera->SetViewUp(0.0, 1.0, 0.0);
-  camera->SetViewAngle(30.0);
-  renderer->ResetCameraClippingRange();
+void vtkVoxelGIScenes::AddGlossyRoom(vtkRenderer* renderer)
+{
+  if (!renderer)
+  {
+    return;
+  }
+  const double S = 6.0;
+  // The floor is glossy: Blinn-Phong of power 60 over a dark diffuse base.
+  vtkProperty* floor = AddRoom(renderer, { 0, 0, 0 }, { S, S, S }, { 0.3, 0.3, 0.32 },
+    { 0.75, 0.75, 0.75 }, { 0.15, 0.25, 0.7 }, { 0.75, 0.5, 0.15 })
+                         ->GetProperty();
+  floor->SetSpecular(0.6);
+  floor->SetSpecularColor(1.0, 1.0, 1.0);
+  floor->SetSpecularPower(60.0);
+
+  // A bright strip on the back wall, just in front of it, and a dimmer warm square on the left.
+  MakeEmitter(AddQuad(renderer, { 1.2, 3.6, 0.01 }, { 4.8, 3.6, 0.01 }, { 1.2, 4.4, 0.01 },
+                { 1.0, 1.0, 1.0 }),
+    { 6.0, 6.0, 6.0 });
+  MakeEmitter(AddQuad(renderer, { 0.01, 1.0, 1.5 }, { 0.01, 2.0, 1.5 }, { 0.01, 1.0, 2.5 },
+                { 1.0, 1.0, 1.0 }),
+    { 3.0, 1.5, 0.5 });
+
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetCenter(2.0, 0.9, 3.0);
+  sphere->SetRadius(0.9);
+  sphere->SetThetaResolution(48);
+  sphere->SetPhiResolution(32);
+  AddSource(renderer, sphere, 0.8, 0.8, 0.8);
+  AddBlock(renderer, 4.3, 2.2, 1.2, 1.6, 1.2, 25.0, { 0.7, 0.2, 0.2 });
+
+  // A dim fill light behind the camera: its highlight on the floor is out of view.
+  AddPointLight(renderer, { 0.5 * S, 5.5, 3.5 * S }, { 1.0, 1.0, 1.0 }, 0.3);
+  AimCamera(renderer, { 0.5 * S, 0.5 * S, 2.9 * S }, { 0.5 * S, 0.5 * S, 0.5 * S });
+}
+
+void vtkVoxelGIScenes::AddIsosurfaceRoom(vtkRenderer* renderer)
+{
+  if (!renderer)
+  {
+    return;
+  }
+  // The wavelet's isosurface (RTData = 157 over [-10, 10]^3), coloured by height, in a room.
+  vtkNew<vtkRTAnalyticSource> wavelet;
+  vtkNew<vtkContourFilter> contour;
+  contour->SetInputConnection(wavelet->GetOutputPort());
+  contour->SetValue(0, 157.0);
+  contour->ComputeScalarsOff();
+  vtkNew<vtkElevationFilter> elevation;
+  elevation->SetInputConnection(contour->GetOutputPort());
+  elevation->SetLowPoint(0.0, -10.0, 0.0);
+  elevation->SetHighPoint(0.0, 10.0, 0.0);
+  vtkNew<vtkLookupTable> lut;
+  lut->SetHueRange(0.667, 0.0);
+  lut->SetTableRange(0.0, 1.0);
+  vtkActor* surface = AddSource(renderer, elevation, 1.0, 1.0, 1.0);
+  vtkPolyDataMapper* mapper = vtkPolyDataMapper::SafeDownCast(surface->GetMapper());
+  mapper->SetLookupTable(lut);
+  mapper->SetScalarRange(0.0, 1.0);
+  mapper->ScalarVisibilityOn();
+
+  AddRoom(renderer, { -16, -11, -16 }, { 16, 19, 16 }, { 0.75, 0.75, 0.75 },
+    { 0.75, 0.75, 0.75 }, { 0.7, 0.7, 0.3 }, { 0.3, 0.6, 0.7 });
+  AddPointLight(renderer, { 0.0, 17.0, 4.0 }, { 1.0, 1.0, 1.0 }, 1.0);
+  AimCamera(renderer, { 0.0, 4.0, 62.0 }, { 0.0, 3.0, 0.0 });
+}
+
+void vtkVoxelGIScenes::AddGlyphField(vtkRenderer* renderer)
+{
+  if (!renderer)
+  {
+    return;
+  }
+  // A sky of radiance 0.3: the background, and every surface's ambient term (ambient
+  // coefficient 0.3 of its own colour) is what that sky would reflect unoccluded.
+  const double sky = 0.3;
+  renderer->SetBackground(sky, sky, sky);
+
+  AddQuad(renderer, { -12, 0, -12 }, { -12, 0, 12 }, { 12, 0, -12 }, { 0.7, 0.7, 0.7 });
+
+  // 9 x 9 boxes on a 2-unit grid, their heights from a smooth bump function.
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkDoubleArray> sizes;
+  sizes->SetNumberOfComponents(3);
+  for (int i = 0; i < 9; ++i)
+  {
+    for (int k = 0; k < 9; ++k)
+    {
+      const double x = 2.0 * (i - 4), z = 2.0 * (k - 4);
+      points->InsertNextPoint(x, 0.0, z);
+      const double h = 0.6 + 2.4 * (0.5 + 0.5 * std::sin(0.7 * x) * std::cos(0.5 * z));
+      sizes->InsertNextTuple3(1.3, h, 1.3);
+    }
+  }
+  vtkNew<vtkPolyData> centres;
+  centres->SetPoints(points);
+  centres->GetPointData()->SetVectors(sizes);
+  vtkNew<vtkCubeSource> cube;
+  cube->SetCenter(0.0, 0.5, 0.0);
+  vtkNew<vtkGlyph3D> glyphs;
+  glyphs->SetInputData(centres);
+  glyphs->SetSourceConnection(cube->GetOutputPort());
+  glyphs->SetScaleModeToScaleByVectorComponents();
+  glyphs->OrientOff();
+  vtkActor* boxes = AddSource(renderer, glyphs, 0.85, 0.6, 0.35);
+  boxes->GetMapper()->ScalarVisibilityOff();
+
+  vtkActorCollection* actors = renderer->GetActors();
+  for (int i = 0; i < actors->GetNumberOfItems(); ++i)
+  {
+    vtkActor::SafeDownCast(actors->GetItemAsObject(i))->GetProperty()->SetAmbient(sky);
+  }
+
+  vtkNew<vtkLight> sun;
+  sun->SetLightTypeToSceneLight();
+  sun->SetPositional(false);
+  sun->SetPosition(-5.0, 10.0, 4.0);
+  sun->SetFocalPoint(0.0, 0.0, 0.0);
+  sun->SetColor(1.0, 0.97, 0.9);
+  sun->SetIntensity(1.0);
+  renderer->AddLight(sun);
+  AimCamera(renderer, { 15.0, 13.0, 23.0 }, { 0.0, 0.5, 0.0 });
+}
+
+bool vtkVoxelGIScenes::AddScene(vtkRenderer* renderer, const char* name)
+{
+  if (!renderer || !name)
+  {
+    return false;
+  }
+  if (!std::strcmp(name, "cornell"))
+  {
+    AddCornellBox(renderer);
+  }
+  else if (!std::strcmp(name, "glossy"))
+  {
+    AddGlossyRoom(renderer);
+  }
+  else if (!std::strcmp(name, "isosurface"))
+  {
+    AddIsosurfaceRoom(renderer);
+  }
+  else if (!std::strcmp(name, "glyphs"))
+  {
+    AddGlyphField(renderer);
+  }
+  else
+  {
+    return false;
+  }
+  return true;
 }
 
 void vtkVoxelGIScenes::PrintSelf(ostream& os, vtkIndent indent)

@@ -7,6 +7,12 @@
  * ceiling and a positional light just below it; the camera looks in through the open front.
  * The box spans [0, 5.5] on each axis (world units).
  *
+ * The other scenes are those of the error study against a path-traced reference:
+ * AddGlossyRoom() (emissive quads, a glossy floor), AddIsosurfaceRoom() (an isosurface of
+ * VTK's wavelet coloured by height, in a room) and AddGlyphField() (boxes glyphed on a ground
+ * plane, a directional sun and a uniform sky that the ambient term stands for).
+ * Emitters are drawn by VTK at their emitted radiance (their ambient colour).
+ *
  * @sa vtkVoxelGIPass
  */
 #ifndef vtkVoxelGIScenes_h
@@ -15,6 +21,8 @@
 #include "vtkObject.h"
 #include "vtkRenderingVoxelGIModule.h" // for export macro
 
+class vtkActor;
+class vtkAlgorithm;
 class vtkRenderer;
 
 class VTKRENDERINGVOXELGI_EXPORT vtkVoxelGIScenes : public vtkObject
@@ -29,6 +37,23 @@ public:
    * The ceiling panel gets an emission of `panelEmission` (vtkVoxelGIPass::EMISSION).
    */
   static void AddCornellBox(vtkRenderer* renderer, double panelEmission = 4.0);
+
+  static void AddGlossyRoom(vtkRenderer* renderer);
+  static void AddIsosurfaceRoom(vtkRenderer* renderer);
+  static void AddGlyphField(vtkRenderer* renderer);
+
+  /**
+   * Add the scene called `name`: "cornell", "glossy", "isosurface" or "glyphs". Returns false
+   * (and adds nothing) for another name.
+   */
+  static bool AddScene(vtkRenderer* renderer, const char* name);
+
+  /**
+   * Add an actor drawing `source`'s polygonal output in colour (r, g, b) to `renderer`, and
+   * return it (owned by the renderer).
+   */
+  static vtkActor* AddSource(vtkRenderer* renderer, vtkAlgorithm* source, double r, double g,
+    double b);
 
 protected:
   vtkVoxelGIScenes() = default;

@@ -68,17 +68,6 @@ struct Options
   std::string Image; // PNG of the first GI frame, if given
 };
 
-vtkActor* AddActor(vtkRenderer* renderer, vtkAlgorithm* source, double r, double g, double b)
-{
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(source->GetOutputPort());
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  actor->GetProperty()->SetColor(r, g, b);
-  renderer->AddActor(actor);
-  return actor;
-}
-
 // N spheres and boxes on a ground plane under a directional light (an open scene with AO).
 void AddField(vtkRenderer* renderer, int objects)
 {
@@ -87,7 +76,7 @@ void AddField(vtkRenderer* renderer, int objects)
   ground->SetOrigin(-1, 0, -1);
   ground->SetPoint1(-1, 0, 2 * side + 1);
   ground->SetPoint2(2 * side + 1, 0, -1);
-  AddActor(renderer, ground, 0.8, 0.8, 0.8);
+  vtkVoxelGIScenes::AddSource(renderer, ground, 0.8, 0.8, 0.8);
   for (int i = 0; i < objects; ++i)
   {
     const double x = 2.0 * (i % side) + 0.5, z = 2.0 * (i / side) + 0.5;
@@ -99,13 +88,13 @@ void AddField(vtkRenderer* renderer, int objects)
       sphere->SetRadius(0.6);
       sphere->SetThetaResolution(24);
       sphere->SetPhiResolution(24);
-      AddActor(renderer, sphere, 0.9 - 0.6 * hue, 0.4, 0.3 + 0.6 * hue);
+      vtkVoxelGIScenes::AddSource(renderer, sphere, 0.9 - 0.6 * hue, 0.4, 0.3 + 0.6 * hue);
     }
     else
     {
       vtkNew<vtkCubeSource> cube;
       cube->SetBounds(x - 0.5, x + 0.5, 0.0, 1.0 + (i % 3), z - 0.5, z + 0.5);
-      AddActor(renderer, cube, 0.3, 0.5 + 0.4 * hue, 0.8 - 0.5 * hue);
+      vtkVoxelGIScenes::AddSource(renderer, cube, 0.3, 0.5 + 0.4 * hue, 0.8 - 0.5 * hue);
     }
   }
   vtkNew<vtkLight> sun;
@@ -141,7 +130,7 @@ vtkActor* AddPlaced(vtkRenderer* renderer, vtkAlgorithm* source, vtkTransform* t
   vtkNew<vtkTransformPolyDataFilter> place;
   place->SetInputConnection(source->GetOutputPort());
   place->SetTransform(transform);
-  return AddActor(renderer, place, r, g, b);
+  return vtkVoxelGIScenes::AddSource(renderer, place, r, g, b);
 }
 
 // A Sponza-like atrium, 30 x 12 x 14 units: floor, side walls, two rows of columns carrying
@@ -156,7 +145,7 @@ void AddAtrium(vtkRenderer* renderer)
     quad->SetPoint1(ax, ay, az);
     quad->SetPoint2(bx, by, bz);
     quad->SetResolution(resolution, resolution);
-    return AddActor(renderer, quad, r, g, b);
+    return vtkVoxelGIScenes::AddSource(renderer, quad, r, g, b);
   };
   plane(0, 0, 0, 0, 0, width, length, 0, 0, 64, 0.75, 0.7, 0.6); // floor
   plane(0, 0, 0, length, 0, 0, 0, height, 0, 32, 0.8, 0.75, 0.65); // walls

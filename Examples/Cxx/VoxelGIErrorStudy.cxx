@@ -1,11 +1,17 @@
-// Error against run time: renders the Cornell box with baselines (plain VTK, VTK's SSAO, the
-// pass with GI off) and with the pass at its defaults and with one setting varied at a time,
-// and writes, per configuration, the median frame time (full update every frame: voxelize,
-// light, mip, trace), the median per-stage GPU times and the error against the path-traced
-// reference (RMSE, relMSE, SSIM, FLIP) as CSV.
+// Error against run time: renders one of vtkVoxelGIScenes' scenes with baselines (plain VTK,
+// VTK's SSAO, the pass with GI off) and with the pass at its defaults and with one setting
+// varied at a time, and writes, per configuration, the median frame time (full update every
+// frame: voxelize, light, mip, trace), the median camera-only frame time (only tracing and
+// compositing rerun), the median per-stage GPU times of the full update and the error against
+// the path-traced reference (RMSE, relMSE, SSIM, FLIP) as CSV. The images of the plain, ssao
+// and defaults configurations are written beside it (OUT-plain.pfm, ...), linear float RGB.
 //
-//   VoxelGIErrorStudy REFERENCE.pfm OUT.csv [frames]
+//   VoxelGIErrorStudy [--egl] SCENE REFERENCE.pfm OUT.csv [frames]
+//
+// SCENE: cornell, glossy, isosurface or glyphs (vtkVoxelGIScenes::AddScene). --egl renders
+// headless through EGL (vtkVoxelGIEGLRenderWindow), as on a GPU machine without X.
 #include "ImageMetrics.h"
+#include "vtkVoxelGIEGLRenderWindow.h"
 #include "vtkVoxelGIPass.h"
 #include "vtkVoxelGIScenes.h"
 #include "vtkVoxelGISettings.h"
@@ -17,6 +23,7 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSSAOPass.h"
+#include "vtkSmartPointer.h"
 
 #include <algorithm>
 #include <chrono>
@@ -48,18 +55,40 @@ double Median(std::vector<double> v)
 
 int main(int argc, char* argv[])
 {
-  if (argc < 3)
+  bool egl = false;
+  std::vector<std::string> args;
+  for (int i = 1; i < argc; ++i)
   {
-    std::cerr << "usage: VoxelGIErrorStudy REFERENCE.pfm OUT.csv [frames]\n";
+    if (std::string(argv[i]) == "--egl")
+    {
+      egl = true;
+    }
+    else
+    {
+      args.emplace_back(argv[i]);
+    }
+  }
+  if (args.size() < 3)
+  {
+    std::cerr << "usage: VoxelGIErrorStudy [--egl] SCENE REFERENCE.pfm OUT.csv [frames]\n";
     return EXIT_FAILURE;
+  }
+  const std::string& scene = args[0];
+  {
+    vtkNew<vtkRenderer> probe;
+    if (!vtkVoxelGIScenes::AddScene(probe, scene.c_str()))
+    {
+      std::cerr << "unknown scene " << scene << "\n";
+      return EXIT_FAILURE;
+    }
   }
   voxelgi::metrics::Image reference;
-  if (!voxelgi::metrics::ReadPfm(argv[1], reference))
+  if (!voxelgi::metrics::ReadPfm(args[1], reference))
   {
-    std::cerr << "cannot read " << argv[1] << "\n";
+    std::cerr << "cannot read " << args[1] << "\n";
     return EXIT_FAILURE;
   }
-  const int frames = argc > 3 ? std::max(1, std::atoi(argv[3])) : 5;
+  const int frames = args.size() > 3 ? std::max(1, std::atoi(args[3].c_str())) : 5;
 
   std::vector<Config> configs = { { "plain", "", 0 }, { "ssao", "", 0 }, { "gi-off", "", 0 },
     { "defaults", "", 0 } };
@@ -67,7 +96,8 @@ int main(int argc, char* argv[])
     { "VoxelResolution", { 32, 64, 256 } }, { "DiffuseConeCount", { 1, 3, 9, 16 } },
     { "DiffuseConeAperture", { 30, 45, 90 } }, { "ConeStepFactor", { 0.35, 0.5, 1.0, 1.5 } },
     { "Bounces", { 0, 2 } }, { "TraceResolution", { 0.5, 0.25 } },
-    { "AnisotropicMipmaps", { 0 } } };
+    { "AnisotropicMipmaps", { 0 } }, { "AmbientOcclusionStrength", { 0, 1 } },
+    { "SpecularCone", { 0 } } };
   for (const auto& s : sweep)
   {
     for (double v : s.second)
@@ -76,8 +106,8 @@ int main(int argc, char* argv[])
     }
   }
 
-  std::ofstream csv(argv[2]);
-  csv << "config,setting,value,frame_ms,rmse,relmse,ssim,flip";
+  std::ofstream csv(args[2]);
+  csv << "config,setting,value,frame_ms,camera_ms,rmse,relmse,ssim,flip";
   for (int s = 0; s < vtkVoxelGIPass::NUMBER_OF_STAGES; ++s)
   {
     csv << "," << vtkVoxelGIPass::GetStageName(s) << "_ms";
@@ -87,8 +117,10 @@ int main(int argc, char* argv[])
   for (const Config& config : configs)
   {
     vtkNew<vtkRenderer> renderer;
-    vtkVoxelGIScenes::AddCornellBox(renderer);
-    vtkNew<vtkRenderWindow> window;
+    vtkVoxelGIScenes::AddScene(renderer, scene.c_str());
+    vtkSmartPointer<vtkRenderWindow> window = egl
+      ? vtkSmartPointer<vtkRenderWindow>(vtkSmartPointer<vtkVoxelGIEGLRenderWindow>::New())
+      : vtkSmartPointer<vtkRenderWindow>::New();
     window->SetSize(reference.Width, reference.Height);
     window->SetOffScreenRendering(true);
     window->AddRenderer(renderer);
@@ -98,10 +130,14 @@ int main(int argc, char* argv[])
     const bool usesPass = config.Name != "plain" && config.Name != "ssao";
     if (config.Name == "ssao")
     {
-      // radius and bias in scene units: the box is 5.5 wide
+      // radius and bias in scene units: a tenth and a five-hundredth of the scene's extent
+      double bounds[6];
+      renderer->ComputeVisiblePropBounds(bounds);
+      const double extent =
+        std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] });
       ssao->SetDelegatePass(steps);
-      ssao->SetRadius(0.5);
-      ssao->SetBias(0.01);
+      ssao->SetRadius(0.1 * extent);
+      ssao->SetBias(0.002 * extent);
       ssao->SetKernelSize(128);
       renderer->SetPass(ssao);
     }
@@ -117,27 +153,36 @@ int main(int argc, char* argv[])
       renderer->SetPass(gi);
     }
 
-    std::vector<double> frameMs;
+    // Frames with a new camera each (so that no stored image is presented again), after one
+    // warm-up frame; returns their wall-clock times and records the stage times if asked.
     std::vector<std::vector<double>> stageMs(vtkVoxelGIPass::NUMBER_OF_STAGES);
-    for (int f = -1; f < frames; ++f) // one warm-up frame
-    {
-      // a new camera every frame, so that the stored image is never presented again
-      renderer->GetActiveCamera()->Azimuth(f % 2 ? 0.01 : -0.01);
-      window->WaitForCompletion();
-      const auto start = std::chrono::steady_clock::now();
-      window->Render();
-      window->WaitForCompletion();
-      if (f < 0)
+    auto timeFrames = [&](bool recordStages) {
+      std::vector<double> ms;
+      for (int f = -1; f < frames; ++f)
       {
-        continue;
+        renderer->GetActiveCamera()->Azimuth(f % 2 ? 0.01 : -0.01);
+        window->WaitForCompletion();
+        const auto start = std::chrono::steady_clock::now();
+        window->Render();
+        window->WaitForCompletion();
+        if (f < 0)
+        {
+          continue;
+        }
+        ms.push_back(std::chrono::duration<double, std::milli>(
+          std::chrono::steady_clock::now() - start)
+                       .count());
+        for (int s = 0; recordStages && usesPass && s < vtkVoxelGIPass::NUMBER_OF_STAGES; ++s)
+        {
+          stageMs[s].push_back(gi->GetStageRan(s) ? gi->GetStageTime(s) : 0.0);
+        }
       }
-      frameMs.push_back(
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-      for (int s = 0; usesPass && s < vtkVoxelGIPass::NUMBER_OF_STAGES; ++s)
-      {
-        stageMs[s].push_back(gi->GetStageRan(s) ? gi->GetStageTime(s) : 0.0);
-      }
-    }
+      return Median(ms);
+    };
+    const double frameMs = timeFrames(true);
+    // Only the camera moves from now on: the pass reruns tracing and compositing alone.
+    gi->SetUpdatePolicy(vtkVoxelGIPass::UPDATE_ON_CHANGE);
+    const double cameraMs = timeFrames(false);
 
     vtkNew<vtkFloatArray> pixels;
     if (!(usesPass && gi->GetEnabled() &&
@@ -145,17 +190,26 @@ int main(int argc, char* argv[])
     {
       window->GetRGBAPixelData(0, 0, reference.Width - 1, reference.Height - 1, 0, pixels);
     }
-    const voxelgi::metrics::Errors e = voxelgi::metrics::Compare(
-      voxelgi::metrics::FromRgba(pixels->GetPointer(0), reference.Width, reference.Height),
-      reference);
-    csv << config.Name << "," << config.Setting << "," << config.Value << "," << Median(frameMs)
-        << "," << e.Rmse << "," << e.RelMse << "," << e.Ssim << "," << e.Flip;
+    const voxelgi::metrics::Image image =
+      voxelgi::metrics::FromRgba(pixels->GetPointer(0), reference.Width, reference.Height);
+    const voxelgi::metrics::Errors e = voxelgi::metrics::Compare(image, reference);
+    if (config.Name == "plain" || config.Name == "ssao" || config.Name == "defaults")
+    {
+      const std::string& out = args[2];
+      const std::string stem = out.size() > 4 && out.compare(out.size() - 4, 4, ".csv") == 0
+        ? out.substr(0, out.size() - 4)
+        : out;
+      voxelgi::metrics::WritePfm(stem + "-" + config.Name + ".pfm", image);
+    }
+    csv << config.Name << "," << config.Setting << "," << config.Value << "," << frameMs << ","
+        << cameraMs << "," << e.Rmse << "," << e.RelMse << "," << e.Ssim << "," << e.Flip;
     for (const auto& s : stageMs)
     {
       csv << "," << Median(s);
     }
     csv << "\n";
-    std::cout << config.Name << " " << config.Value << ": " << Median(frameMs) << " ms, RMSE "
+    std::cout << config.Name << " " << config.Value << ": " << frameMs << " ms (camera only "
+              << cameraMs << " ms), RMSE "
               << e.Rmse << ", relMSE " << e.RelMse << ", SSIM " << e.Ssim << ", FLIP " << e.Flip
               << std::endl;
   }

@@ -32,17 +32,6 @@
 
 namespace
 {
-vtkActor* AddActor(vtkRenderer* renderer, vtkAlgorithmOutput* port, double r, double g, double b)
-{
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(port);
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  actor->GetProperty()->SetColor(r, g, b);
-  renderer->AddActor(actor);
-  return actor;
-}
-
 // A floor and two walls around the bounds, and a light above: a room for a dataset.
 void AddRoom(vtkRenderer* renderer, const double b[6])
 {
@@ -56,7 +45,7 @@ void AddRoom(vtkRenderer* renderer, const double b[6])
     plane->SetOrigin(ox, oy, oz);
     plane->SetPoint1(ax, ay, az);
     plane->SetPoint2(bx, by, bz);
-    AddActor(renderer, plane->GetOutputPort(), 0.85, 0.85, 0.8);
+    vtkVoxelGIScenes::AddSource(renderer, plane, 0.85, 0.85, 0.8);
   };
   quad(x0, y0, z0, x0, y0, z1, x1, y0, z0); // floor
   quad(x0, y0, z0, x1, y0, z0, x0, y1, z0); // back wall
@@ -139,7 +128,7 @@ void VoxelGIViewerWindow::showScene(int scene)
     elevation->SetLowPoint(0, -10, 0);
     elevation->SetHighPoint(0, 10, 0);
     elevation->Update();
-    AddActor(this->Renderer, elevation->GetOutputPort(), 1, 1, 1);
+    vtkVoxelGIScenes::AddSource(this->Renderer, elevation, 1, 1, 1);
     AddRoom(this->Renderer, elevation->GetOutput()->GetBounds());
   }
   else if (scene == 2)
@@ -154,7 +143,7 @@ void VoxelGIViewerWindow::showScene(int scene)
     glyphs->SetInputConnection(points->GetOutputPort());
     glyphs->SetSourceConnection(sphere->GetOutputPort());
     glyphs->Update();
-    AddActor(this->Renderer, glyphs->GetOutputPort(), 0.9, 0.5, 0.2);
+    vtkVoxelGIScenes::AddSource(this->Renderer, glyphs, 0.9, 0.5, 0.2);
     AddRoom(this->Renderer, glyphs->GetOutput()->GetBounds());
   }
   else
@@ -192,7 +181,7 @@ bool VoxelGIViewerWindow::openFile(const QString& path)
     return false;
   }
   this->resetRenderer();
-  AddActor(this->Renderer, reader->GetOutputPort(), 0.8, 0.8, 0.85);
+  vtkVoxelGIScenes::AddSource(this->Renderer, reader, 0.8, 0.8, 0.85);
   AddRoom(this->Renderer, data->GetBounds());
   this->Renderer->GetActiveCamera()->Azimuth(30);
   this->Renderer->GetActiveCamera()->Elevation(15);

@@ -3,6 +3,7 @@
 // in front of it: red clearly above green in the indirect image there, not elsewhere.
 #include "VoxelGITestUtilities.h"
 #include "vtkVoxelGIPass.h"
+#include "vtkVoxelGIScenes.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -27,7 +28,7 @@ int TestGIGlossyFloor(int argc, char* argv[])
   floor->GetProperty()->SetSpecularPower(60.0);
   vtkNew<vtkCubeSource> cube;
   cube->SetBounds(-1.0, 1.0, 0.0, 2.0, -1.5, -0.5);
-  voxelgi_test::AddActor(renderer, cube, 0.9, 0.1, 0.1);
+  vtkVoxelGIScenes::AddSource(renderer, cube, 0.9, 0.1, 0.1);
 
   vtkNew<vtkLight> sun;
   sun->SetLightTypeToSceneLight();

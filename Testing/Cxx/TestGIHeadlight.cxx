@@ -2,6 +2,7 @@
 // not cone traced; a sphere and a block on a floor, compared with the baseline.
 #include "VoxelGITestUtilities.h"
 #include "vtkVoxelGIPass.h"
+#include "vtkVoxelGIScenes.h"
 
 #include "vtkCamera.h"
 #include "vtkCubeSource.h"
@@ -24,10 +25,10 @@ int TestGIHeadlight(int argc, char* argv[])
   sphere->SetRadius(0.8);
   sphere->SetThetaResolution(32);
   sphere->SetPhiResolution(32);
-  voxelgi_test::AddActor(renderer, sphere, 0.9, 0.6, 0.1);
+  vtkVoxelGIScenes::AddSource(renderer, sphere, 0.9, 0.6, 0.1);
   vtkNew<vtkCubeSource> cube;
   cube->SetBounds(0.4, 1.6, 0.0, 1.2, -0.8, 0.4);
-  voxelgi_test::AddActor(renderer, cube, 0.2, 0.5, 0.9);
+  vtkVoxelGIScenes::AddSource(renderer, cube, 0.2, 0.5, 0.9);
 
   vtkNew<vtkRenderWindow> window;
   window->SetSize(200, 200);

@@ -7,6 +7,7 @@
 //     no direct light, with voxel shadows and with shadow maps alike.
 #include "VoxelGITestUtilities.h"
 #include "vtkVoxelGIPass.h"
+#include "vtkVoxelGIScenes.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -193,7 +194,7 @@ int ShadowedFloor()
   voxelgi_test::AddQuad(renderer, dvec3(-3, 0, -3), dvec3(-3, 0, 3), dvec3(3, 0, -3), 0.8, 0.8, 0.8);
   vtkNew<vtkCubeSource> cube;
   cube->SetBounds(-1.0, 1.0, 1.5, 2.0, -1.0, 1.0);
-  voxelgi_test::AddActor(renderer, cube, 0.8, 0.8, 0.8);
+  vtkVoxelGIScenes::AddSource(renderer, cube, 0.8, 0.8, 0.8);
   vtkNew<vtkLight> sun; // straight down
   sun->SetLightTypeToSceneLight();
   sun->SetPositional(false);

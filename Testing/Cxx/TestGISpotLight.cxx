@@ -3,6 +3,7 @@
 // off), and the image matches its baseline.
 #include "VoxelGITestUtilities.h"
 #include "vtkVoxelGIPass.h"
+#include "vtkVoxelGIScenes.h"
 
 #include "vtkCamera.h"
 #include "vtkCubeSource.h"
@@ -24,7 +25,7 @@ int TestGISpotLight(int argc, char* argv[])
   voxelgi_test::AddQuad(renderer, dvec3(-3, 0, -3), dvec3(-3, 0, 3), dvec3(3, 0, -3), 0.8, 0.8, 0.8);
   vtkNew<vtkCubeSource> cube;
   cube->SetBounds(-0.4, 0.4, 0.0, 0.8, -0.4, 0.4);
-  voxelgi_test::AddActor(renderer, cube, 0.2, 0.4, 0.9);
+  vtkVoxelGIScenes::AddSource(renderer, cube, 0.2, 0.4, 0.9);
 
   vtkNew<vtkLight> spot;
   spot->SetLightTypeToSceneLight();

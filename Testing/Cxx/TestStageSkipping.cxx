@@ -3,6 +3,7 @@
 // recompute by a fresh pass. Also the update policies and the memory of unneeded volumes.
 #include "VoxelGITestUtilities.h"
 #include "vtkVoxelGIPass.h"
+#include "vtkVoxelGIScenes.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -72,10 +73,10 @@ int TestStageSkipping(int, char*[])
   vtkNew<vtkSphereSource> sphere;
   sphere->SetCenter(-1.0, 0.8, 0.0);
   sphere->SetRadius(0.8);
-  voxelgi_test::AddActor(renderer, sphere, 0.9, 0.5, 0.2);
+  vtkVoxelGIScenes::AddSource(renderer, sphere, 0.9, 0.5, 0.2);
   vtkNew<vtkCubeSource> cubeSource;
   cubeSource->SetBounds(0.5, 1.5, 0.0, 1.0, -0.5, 0.5);
-  vtkActor* cube = voxelgi_test::AddActor(renderer, cubeSource, 0.2, 0.4, 0.9);
+  vtkActor* cube = vtkVoxelGIScenes::AddSource(renderer, cubeSource, 0.2, 0.4, 0.9);
   vtkVoxelGIPass::SetPropDynamic(cube, true);
   vtkNew<vtkLight> light;
   light->SetLightTypeToSceneLight();

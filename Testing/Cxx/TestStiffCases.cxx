@@ -115,7 +115,7 @@ vtkActor* AddBox(vtkRenderer* renderer, double x0, double x1, double y0, double 
   cube->SetBounds(x0, x1, y0, y1, z0, z1);
   // Double precision points: in float, a unit box 1e8 from the origin collapses to a point.
   cube->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
-  return voxelgi_test::AddActor(renderer, cube, 0.8, 0.7, 0.6);
+  return vtkVoxelGIScenes::AddSource(renderer, cube, 0.8, 0.7, 0.6);
 }
 
 // Radiance volume and composite finite and in [0, 65504]; prints and fails otherwise.

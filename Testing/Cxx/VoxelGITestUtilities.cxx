@@ -132,17 +132,6 @@ double MeanOver(vtkFloatArray* image, int w, int x0, int y0, int x1, int y1, int
   return n ? sum / n : 0.0;
 }
 
-vtkActor* AddActor(vtkRenderer* renderer, vtkAlgorithm* source, double r, double g, double b)
-{
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(source->GetOutputPort());
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  actor->GetProperty()->SetColor(r, g, b);
-  renderer->AddActor(actor);
-  return actor;
-}
-
 vtkActor* AddQuad(vtkRenderer* renderer, const glm::dvec3& o, const glm::dvec3& p1,
   const glm::dvec3& p2, double r, double g, double b)
 {
@@ -150,7 +139,7 @@ vtkActor* AddQuad(vtkRenderer* renderer, const glm::dvec3& o, const glm::dvec3& 
   plane->SetOrigin(o.x, o.y, o.z);
   plane->SetPoint1(p1.x, p1.y, p1.z);
   plane->SetPoint2(p2.x, p2.y, p2.z);
-  return AddActor(renderer, plane, r, g, b);
+  return vtkVoxelGIScenes::AddSource(renderer, plane, r, g, b);
 }
 
 int CornellRegressionTest(int argc, char* argv[], int debugView)

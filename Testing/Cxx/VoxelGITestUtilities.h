@@ -36,9 +36,6 @@ double MeanOver(vtkFloatArray* image, int w, int x0, int y0, int x1, int y1, int
 /// that everything stays finite and compares with the test's baseline image.
 int CornellRegressionTest(int argc, char* argv[], int debugView);
 
-/// Add an actor drawing `source`'s output in colour (r, g, b) to `renderer`.
-vtkActor* AddActor(vtkRenderer* renderer, vtkAlgorithm* source, double r, double g, double b);
-
 /// Add a quad from `o` spanned by p1 - o and p2 - o (normal (p1 - o) x (p2 - o)).
 vtkActor* AddQuad(vtkRenderer* renderer, const glm::dvec3& o, const glm::dvec3& p1,
   const glm::dvec3& p2, double r, double g, double b);

@@ -4,8 +4,15 @@
 
 Writes OUT_PREFIX.pfm (linear float RGB, rows bottom to top) and OUT_PREFIX.png (preview).
 
-How VTK's model maps to Cycles (VTK shading is Lambert without 1/pi, lights do not fall off):
-- material Kd (VTK diffuse colour x diffuse) -> Diffuse BSDF of that colour;
+How VTK's model maps to Cycles (VTK shading is Lambert without 1/pi plus an unnormalized
+Blinn-Phong highlight, and its lights do not fall off):
+- diffuse term (diffuse coefficient x diffuse colour, or x the scalar colours, which arrive
+  as the OBJ's vertex colours) -> Diffuse BSDF of that colour;
+- specular term ks (specular coefficient x specular colour) of power n -> Glossy BSDF
+  (Beckmann) of colour ks and roughness (2 / (n + 2))^(1/4), i.e. Beckmann alpha
+  sqrt(2 / (n + 2)) (Walter et al. 2007), added to the diffuse one: the lobe the pass's
+  specular cone stands for. VTK's own highlight is not normalized (peak ks I whatever n), so
+  direct highlights differ by design;
 - vtkVoxelGIPass::EMISSION (r, g, b) -> Emission shader, colour (r, g, b) / max, strength max:
   its radiance is the emission, as the pass treats it;
 - unattenuated VTK point light of intensity I -> point light of radius 0, power 4 pi^2 I, with
@@ -13,6 +20,11 @@ How VTK's model maps to Cycles (VTK shading is Lambert without 1/pi, lights do n
   surface of albedo rho reflects rho I cos(theta), VTK's value. (A direct-light-only render of
   the Cornell box matches VTK's own image to within 1 %: median ratio 39.50 against
   4 pi^2 = 39.48.)
+- VTK directional light of intensity I -> sun of strength pi I (irradiance pi I cos(theta)),
+  angle 0, for the same reason;
+- the renderer's background -> uniform world of that radiance. VTK's ambient term stands for
+  that sky: export_scene.py accepts only Ka Ca = background x diffuse colour, which is what the
+  unoccluded sky reflects (the world lights the scene in Cycles, occluded and bounced).
 """
 import json
 import math
@@ -34,11 +46,12 @@ bpy.ops.wm.obj_import(filepath=os.path.join(os.path.dirname(scene_path), desc["o
 for obj in bpy.context.scene.objects:
     for slot in obj.material_slots:
         material = slot.material
+        desc_material = desc["materials"][material.name]
         nodes = material.node_tree.nodes
-        kd = nodes["Principled BSDF"].inputs["Base Color"].default_value[:3]
+        links = material.node_tree.links
         nodes.clear()
         output = nodes.new("ShaderNodeOutputMaterial")
-        emission = desc["emission"].get(material.name)
+        emission = desc_material.get("emission")
         if emission:
             strength = max(emission)
             shader = nodes.new("ShaderNodeEmission")
@@ -46,22 +59,50 @@ for obj in bpy.context.scene.objects:
             shader.inputs["Strength"].default_value = strength
         else:
             shader = nodes.new("ShaderNodeBsdfDiffuse")
-            shader.inputs["Color"].default_value = (*kd, 1.0)
-        material.node_tree.links.new(shader.outputs[0], output.inputs["Surface"])
+            shader.inputs["Color"].default_value = (*desc_material["diffuse"], 1.0)
+            if desc_material.get("vertex_colors"):
+                colors = nodes.new("ShaderNodeAttribute")
+                colors.attribute_name = "Color"
+                scale = nodes.new("ShaderNodeMixRGB")
+                scale.blend_type = 'MULTIPLY'
+                scale.inputs["Fac"].default_value = 1.0
+                scale.inputs["Color2"].default_value = (*desc_material["diffuse"], 1.0)
+                links.new(colors.outputs["Color"], scale.inputs["Color1"])
+                links.new(scale.outputs["Color"], shader.inputs["Color"])
+            if max(desc_material["specular"]) > 0.0:
+                glossy = nodes.new("ShaderNodeBsdfGlossy")
+                glossy.distribution = 'BECKMANN'
+                glossy.inputs["Color"].default_value = (*desc_material["specular"], 1.0)
+                glossy.inputs["Roughness"].default_value = \
+                    (2.0 / (desc_material["specular_power"] + 2.0)) ** 0.25
+                both = nodes.new("ShaderNodeAddShader")
+                links.new(shader.outputs[0], both.inputs[0])
+                links.new(glossy.outputs[0], both.inputs[1])
+                shader = both
+        links.new(shader.outputs[0], output.inputs["Surface"])
 
 scene = bpy.context.scene
 for i, light in enumerate(desc["lights"]):
-    data = bpy.data.lights.new("light%d" % i, "POINT")
-    data.energy = 4.0 * math.pi ** 2 * light["intensity"]
-    data.shadow_soft_size = 0.0
+    if light["type"] == "directional":
+        data = bpy.data.lights.new("light%d" % i, "SUN")
+        data.energy = math.pi * light["intensity"]
+        data.angle = 0.0
+        obj = bpy.data.objects.new("light%d" % i, data)
+        # a sun shines along its local -Z
+        obj.rotation_euler = Vector((0.0, 0.0, -1.0)).rotation_difference(
+            Vector(light["direction"])).to_euler()
+    else:
+        data = bpy.data.lights.new("light%d" % i, "POINT")
+        data.energy = 4.0 * math.pi ** 2 * light["intensity"]
+        data.shadow_soft_size = 0.0
+        data.use_nodes = True
+        falloff = data.node_tree.nodes.new("ShaderNodeLightFalloff")
+        falloff.inputs["Strength"].default_value = 1.0  # the light's power scales it
+        data.node_tree.links.new(falloff.outputs["Constant"],
+                                 data.node_tree.nodes["Emission"].inputs["Strength"])
+        obj = bpy.data.objects.new("light%d" % i, data)
+        obj.location = light["position"]
     data.color = light["color"]
-    data.use_nodes = True
-    falloff = data.node_tree.nodes.new("ShaderNodeLightFalloff")
-    falloff.inputs["Strength"].default_value = 1.0  # the light's power scales it
-    data.node_tree.links.new(falloff.outputs["Constant"],
-                             data.node_tree.nodes["Emission"].inputs["Strength"])
-    obj = bpy.data.objects.new("light%d" % i, data)
-    obj.location = light["position"]
     scene.collection.objects.link(obj)
 
 cam = desc["camera"]
@@ -77,8 +118,11 @@ camera.rotation_euler = Matrix((right, back.cross(right), back)).transposed().to
 scene.collection.objects.link(camera)
 scene.camera = camera
 
-scene.world = bpy.data.worlds.new("black")
-scene.world.color = (0.0, 0.0, 0.0)
+scene.world = bpy.data.worlds.new("sky")
+scene.world.use_nodes = True
+scene.world.node_tree.nodes["Background"].inputs["Color"].default_value = \
+    (*desc["background"], 1.0)
+scene.world.node_tree.nodes["Background"].inputs["Strength"].default_value = 1.0
 scene.render.engine = 'CYCLES'
 scene.cycles.device = 'CPU'
 scene.cycles.samples = int(samples)
@@ -87,6 +131,7 @@ scene.cycles.use_adaptive_sampling = False
 scene.cycles.use_denoising = False
 scene.cycles.max_bounces = 8
 scene.cycles.diffuse_bounces = 8
+scene.cycles.glossy_bounces = 8
 scene.cycles.sample_clamp_direct = 0.0
 scene.cycles.sample_clamp_indirect = 0.0
 scene.render.resolution_x, scene.render.resolution_y = desc["size"]

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <random>
 
 using voxelgi::metrics::Image;
@@ -126,4 +127,13 @@ TEST(ImageMetrics, FloatMapRoundTripAndRgba)
   EXPECT_EQ(read.Height, 1);
   EXPECT_EQ(read.Rgb, image.Rgb);
   EXPECT_FALSE(voxelgi::metrics::ReadPfm(path + ".missing", read));
+
+  // WritePfm writes the same bytes as the map written by hand above.
+  const std::string written = ::testing::TempDir() + "voxelgi-metrics-written.pfm";
+  ASSERT_TRUE(voxelgi::metrics::WritePfm(written, image));
+  std::ifstream a(path, std::ios::binary), b(written, std::ios::binary);
+  const std::string byHand((std::istreambuf_iterator<char>(a)), std::istreambuf_iterator<char>());
+  const std::string byWritePfm(
+    (std::istreambuf_iterator<char>(b)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(byWritePfm, byHand);
 }

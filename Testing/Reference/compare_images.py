@@ -1,0 +1,55 @@
+"""Side-by-side figure of the path-traced references and the study's images: per scene, the
+Cycles reference, plain VTK, VTK's SSAO, the pass at its defaults, and |defaults - reference|.
+
+    python3 compare_images.py OUT.png STUDY_PREFIX SCENE...
+
+reads Testing/Data/Reference/SCENE.pfm and STUDY_PREFIX-SCENE-{plain,ssao,defaults}.pfm (written
+by VoxelGIErrorStudy). All images are linear radiance shown clamped to [0, 1] and sRGB-encoded,
+the way the references' PNG previews are.
+"""
+import os
+import sys
+
+import matplotlib
+import numpy as np
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+out, prefix, scenes = sys.argv[1], sys.argv[2], sys.argv[3:]
+references = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Data", "Reference")
+
+
+def pfm(path):
+    with open(path, "rb") as f:
+        f.readline()
+        w, h = map(int, f.readline().split())
+        f.readline()
+        return np.frombuffer(f.read(), "<f4").reshape(h, w, 3)[::-1]  # rows bottom to top
+
+
+def display(linear):
+    c = np.clip(linear, 0.0, 1.0)
+    return np.where(c <= 0.0031308, 12.92 * c, 1.055 * c ** (1.0 / 2.4) - 0.055)
+
+
+columns = ("Cycles reference", "plain VTK", "vtkSSAOPass", "voxel GI, defaults",
+           "|GI - reference| x 2")
+fig, axes = plt.subplots(len(scenes), len(columns), figsize=(2.4 * len(columns), 2.5 * len(scenes)),
+                         squeeze=False)
+for row, scene in enumerate(scenes):
+    reference = pfm(os.path.join(references, scene + ".pfm"))
+    images = [reference] + [pfm("%s-%s-%s.pfm" % (prefix, scene, c))
+                            for c in ("plain", "ssao", "defaults")]
+    images.append(2.0 * np.abs(images[3] - reference))
+    for col, image in enumerate(images):
+        ax = axes[row][col]
+        ax.imshow(display(image))
+        ax.set_xticks([])
+        ax.set_yticks([])
+        if row == 0:
+            ax.set_title(columns[col], fontsize=9)
+        if col == 0:
+            ax.set_ylabel(scene, fontsize=9)
+fig.tight_layout()
+fig.savefig(out, dpi=100)
