@@ -3,7 +3,6 @@
 #include "vtkVoxelGIPass.h"
 
 #include "vtkActor.h"
-#include "vtkActorCollection.h"
 #include "vtkCamera.h"
 #include "vtkContourFilter.h"
 #include "vtkCubeSource.h"
@@ -235,7 +234,8 @@ void vtkVoxelGIScenes::AddGlyphField(vtkRenderer* renderer)
   const double sky = 0.3;
   renderer->SetBackground(sky, sky, sky);
 
-  AddQuad(renderer, { -12, 0, -12 }, { -12, 0, 12 }, { 12, 0, -12 }, { 0.7, 0.7, 0.7 });
+  vtkActor* ground =
+    AddQuad(renderer, { -12, 0, -12 }, { -12, 0, 12 }, { 12, 0, -12 }, { 0.7, 0.7, 0.7 });
 
   // 9 x 9 boxes on a 2-unit grid, their heights from a smooth bump function.
   vtkNew<vtkPoints> points;
@@ -263,12 +263,8 @@ void vtkVoxelGIScenes::AddGlyphField(vtkRenderer* renderer)
   glyphs->OrientOff();
   vtkActor* boxes = AddSource(renderer, glyphs, 0.85, 0.6, 0.35);
   boxes->GetMapper()->ScalarVisibilityOff();
-
-  vtkActorCollection* actors = renderer->GetActors();
-  for (int i = 0; i < actors->GetNumberOfItems(); ++i)
-  {
-    vtkActor::SafeDownCast(actors->GetItemAsObject(i))->GetProperty()->SetAmbient(sky);
-  }
+  ground->GetProperty()->SetAmbient(sky);
+  boxes->GetProperty()->SetAmbient(sky);
 
   vtkNew<vtkLight> sun;
   sun->SetLightTypeToSceneLight();
