@@ -13,6 +13,8 @@ import sys
 import matplotlib
 import numpy as np
 
+from float_images import read_pfm, srgb_encode
+
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
@@ -21,16 +23,11 @@ references = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Dat
 
 
 def pfm(path):
-    with open(path, "rb") as f:
-        f.readline()
-        w, h = map(int, f.readline().split())
-        f.readline()
-        return np.frombuffer(f.read(), "<f4").reshape(h, w, 3)[::-1]  # rows bottom to top
+    return read_pfm(path)[::-1]  # top row first, for imshow
 
 
 def display(linear):
-    c = np.clip(linear, 0.0, 1.0)
-    return np.where(c <= 0.0031308, 12.92 * c, 1.055 * c ** (1.0 / 2.4) - 0.055)
+    return srgb_encode(np.clip(linear, 0.0, 1.0))
 
 
 columns = ("Cycles reference", "plain VTK", "vtkSSAOPass", "voxel GI, defaults",

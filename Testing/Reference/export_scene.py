@@ -18,6 +18,8 @@ from vtkmodules.vtkRenderingCore import vtkRenderer, vtkRenderWindow
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (render window factory)
 from voxelgi import vtkVoxelGIPass, vtkVoxelGIScenes
 
+from float_images import srgb_encode
+
 scene_name, prefix = sys.argv[1:3]
 size = (200, 200)
 renderer = vtkRenderer()
@@ -43,11 +45,6 @@ def scaled(k, color):
 
 def close(a, b):
     return all(abs(x - y) < 1e-6 for x, y in zip(a, b))
-
-
-def srgb(c):
-    """Blender's OBJ importer reads vertex colours as sRGB: encode VTK's linear values."""
-    return 12.92 * c if c <= 0.0031308 else 1.055 * c ** (1.0 / 2.4) - 0.055
 
 
 background = list(renderer.GetBackground())
@@ -97,7 +94,8 @@ for line in lines:
         actor, point = actor + 1, 0
     elif line.startswith("v ") and vertex_colors:
         rgb = vertex_colors[actor].GetTuple(point)[:3] if actor in vertex_colors else (255,) * 3
-        line += " " + " ".join("%.6f" % srgb(c / 255.0) for c in rgb)
+        # Blender's OBJ importer reads vertex colours as sRGB: encode VTK's linear values.
+        line += " " + " ".join("%.6f" % srgb_encode(c / 255.0) for c in rgb)
         point += 1
     elif line.startswith("f "):
         line = "f " + " ".join("%s//%s" % (v.split("/")[0], v.split("/")[-1])

@@ -26,19 +26,13 @@ noise=$(mktemp -d)
 trap 'rm -rf "$noise"' EXIT
 render "$noise/a" $((samples / 4)) 2
 render "$noise/b" $((samples / 4)) 3
-/usr/bin/python3 - "$noise/a.pfm" "$noise/b.pfm" "$refs/$scene.pfm" "$samples" "$seconds" \
+PYTHONPATH=$here /usr/bin/python3 - "$noise/a.pfm" "$noise/b.pfm" "$refs/$scene.pfm" "$samples" "$seconds" \
   > "$refs/$scene.txt" <<'EOF'
 import sys
 import numpy as np
+from float_images import read_pfm
 
-def pfm(path):
-    with open(path, "rb") as f:
-        f.readline()
-        w, h = map(int, f.readline().split())
-        f.readline()
-        return np.frombuffer(f.read(), "<f4").reshape(h, w, 3).astype(np.float64)
-
-a, b, ref = (pfm(p) for p in sys.argv[1:4])
+a, b, ref = (read_pfm(p) for p in sys.argv[1:4])
 samples, seconds = sys.argv[4:6]
 quarter = np.sqrt(np.mean((a - b) ** 2)) / np.sqrt(2.0)
 print("samples per pixel: %s" % samples)
