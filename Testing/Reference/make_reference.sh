@@ -13,7 +13,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
 scenes=$root/Testing/Data/Scenes
 refs=$root/Testing/Data/Reference
-PYTHONPATH=$root/build/lib/python3/dist-packages xvfb-run -a /usr/bin/python3 \
+PYTHONPATH=$root/build/lib/python3/dist-packages xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" /usr/bin/python3 \
   "$here/export_scene.py" "$scene" "$scenes/$scene"
 
 render() { # prefix samples seed
