@@ -14,8 +14,9 @@ foreach (i RANGE ${last})
     string(APPEND labels "${label}|")
   endforeach ()
   string(REPLACE "\"" "\\\"" doc "${doc}")
+  string(TOLOWER "${power_of_two}" power_of_two) # TRUE/FALSE to C++
   string(APPEND entries
-    "  { \"${name}\", \"${type}\", ${min}, ${max}, ${default}, \"${group}\", \"${labels}\", \"${doc}\" },\n")
+    "  { \"${name}\", \"${type}\", ${min}, ${max}, ${default}, ${power_of_two}, \"${group}\", \"${labels}\", \"${doc}\" },\n")
   if (type STREQUAL "double")
     string(APPEND getters "  if (name == \"${name}\") return pass->Get${name}();\n")
     string(APPEND setters "  if (name == \"${name}\") { pass->Set${name}(value); return true; }\n")
@@ -29,6 +30,8 @@ set(content "// Generated from VoxelGISettings.json by GenerateSettings.cmake. D
 #include \"vtkObjectFactory.h\"
 #include \"vtkVoxelGIPass.h\"
 
+#include \"VoxelGrid.h\" // for voxelgi::ClampResolution
+
 #include <cmath>
 #include <string>
 
@@ -41,6 +44,7 @@ struct Entry
   double Minimum;
   double Maximum;
   double Default;
+  bool PowerOfTwo;
   const char* Group;
   const char* Values;
   const char* Documentation;
@@ -76,10 +80,18 @@ VOXELGI_FIELD(GetType, const char*, Type, \"\")
 VOXELGI_FIELD(GetMinimum, double, Minimum, 0.0)
 VOXELGI_FIELD(GetMaximum, double, Maximum, 0.0)
 VOXELGI_FIELD(GetDefault, double, Default, 0.0)
+VOXELGI_FIELD(GetPowerOfTwo, bool, PowerOfTwo, false)
 VOXELGI_FIELD(GetGroup, const char*, Group, \"\")
 VOXELGI_FIELD(GetEnumerationValues, const char*, Values, \"\")
 VOXELGI_FIELD(GetDocumentation, const char*, Documentation, \"\")
 #undef VOXELGI_FIELD
+
+int vtkVoxelGISettings::NearestPowerOfTwo(int i, int value)
+{
+  // the pass's own rounding, so that a user interface offers what the pass will use
+  return voxelgi::ClampResolution(
+    value, static_cast<int>(GetMinimum(i)), static_cast<int>(GetMaximum(i)));
+}
 
 double vtkVoxelGISettings::GetValue(vtkVoxelGIPass* pass, const char* setting)
 {

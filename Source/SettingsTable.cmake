@@ -5,8 +5,8 @@
 # what depends on the generated file is not rebuilt for nothing.
 # voxelgi_settings_count(<json> <out>): number of settings.
 # voxelgi_read_setting(<json variable> <i>): sets name, type, default, group, doc, min, max (0 and 1 for
-# bool; empty when the table has none), advanced (TRUE/FALSE) and values (the enumeration's
-# labels, a list) to setting <i>'s entries.
+# bool; empty when the table has none), advanced and power_of_two (TRUE/FALSE) and values (the
+# enumeration's labels, a list) to setting <i>'s entries.
 function (voxelgi_settings_count json out)
   string(JSON count LENGTH "${json}" settings)
   set(${out} ${count} PARENT_SCOPE)
@@ -26,12 +26,14 @@ macro (voxelgi_read_setting json_var i)
     set(min 0)
     set(max 1)
   endif ()
-  string(JSON advanced ERROR_VARIABLE _voxelgi_missing GET "${${json_var}}" settings ${i} advanced)
-  if (_voxelgi_missing OR NOT advanced)
-    set(advanced FALSE)
-  else ()
-    set(advanced TRUE)
-  endif ()
+  foreach (field advanced power_of_two)
+    string(JSON ${field} ERROR_VARIABLE _voxelgi_missing GET "${${json_var}}" settings ${i} ${field})
+    if (_voxelgi_missing OR NOT ${field})
+      set(${field} FALSE)
+    else ()
+      set(${field} TRUE)
+    endif ()
+  endforeach ()
   set(values "")
   string(JSON _voxelgi_value_count ERROR_VARIABLE _voxelgi_missing LENGTH "${${json_var}}" settings ${i} values)
   if (NOT _voxelgi_missing AND _voxelgi_value_count GREATER 0)

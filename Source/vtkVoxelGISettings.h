@@ -3,9 +3,10 @@
  * @brief   The table of vtkVoxelGIPass's settings, and access to them by name.
  *
  * Generated at build time from Source/VoxelGISettings.json, the single list of the pass's
- * settings (name, type, range, default, group, enumeration labels, documentation), which the
- * C++ setters, the Qt panel and the ParaView XML follow. User interfaces build their controls
- * from it and read or write a pass's settings with GetValue()/SetValue().
+ * settings (name, type, range, default, group, enumeration labels, documentation, whether
+ * only powers of two are taken), which the C++ setters, the Qt panel and the ParaView XML
+ * follow. User interfaces build their controls from it and read or write a pass's settings
+ * with GetValue()/SetValue().
  *
  * @sa vtkVoxelGIPass
  */
@@ -38,6 +39,13 @@ public:
   static const char* GetGroup(int i);
   static const char* GetEnumerationValues(int i);
   static const char* GetDocumentation(int i);
+
+  /**
+   * Whether setting i takes only the powers of two in its range, and the one of those nearest
+   * to `value` (as the pass rounds it), for user interfaces that offer only what the pass uses.
+   */
+  static bool GetPowerOfTwo(int i);
+  static int NearestPowerOfTwo(int i, int value);
 
   /**
    * Read or write a setting of `pass` by name (integers and booleans rounded); the pass

@@ -16,12 +16,64 @@
 #include <QSpinBox>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <cmath>
 
 namespace
 {
 const char* const GroupOrder[] = { "General", "Voxelization", "Lighting", "Cones", "Debug view",
   "Performance" };
+
+/// Spin box of a setting that takes only powers of two: steps double or halve, and a typed
+/// value is rounded as the pass rounds it, so the box never shows a value the pass would not use.
+class PowerOfTwoSpinBox : public QSpinBox
+{
+public:
+  PowerOfTwoSpinBox(int setting, QWidget* parent)
+    : QSpinBox(parent)
+    , Setting(setting)
+  {
+  }
+
+  void stepBy(int steps) override
+  {
+    // bounded before the conversion to int: a page step is 2^10
+    const double stepped = std::min(std::ldexp(this->value(), steps), 1.0 * this->maximum());
+    this->setValue(this->Nearest(static_cast<int>(stepped)));
+    this->selectAll();
+  }
+
+protected:
+  QValidator::State validate(QString& input, int& pos) const override
+  {
+    const QValidator::State state = QSpinBox::validate(input, pos);
+    // Other numbers are not final: when editing ends, the spin box has fixup() round them.
+    if (state == QValidator::Acceptable)
+    {
+      const int typed = this->valueFromText(input);
+      return this->Nearest(typed) == typed ? state : QValidator::Intermediate;
+    }
+    return state;
+  }
+
+  void fixup(QString& input) const override
+  {
+    bool number = false;
+    const int typed = this->locale().toInt(input, &number);
+    if (number)
+    {
+      input = this->textFromValue(this->Nearest(typed));
+    }
+  }
+
+private:
+  int Nearest(int value) const
+  {
+    return vtkVoxelGISettings::NearestPowerOfTwo(this->Setting, value);
+  }
+
+  const int Setting;
+};
 }
 
 vtkVoxelGISettingsWidget::vtkVoxelGISettingsWidget(QWidget* parent)
@@ -61,7 +113,8 @@ vtkVoxelGISettingsWidget::vtkVoxelGISettingsWidget(QWidget* parent)
     }
     else if (type == "int")
     {
-      auto* spin = new QSpinBox(this);
+      auto* spin = vtkVoxelGISettings::GetPowerOfTwo(i) ? new PowerOfTwoSpinBox(i, this)
+                                                        : new QSpinBox(this);
       spin->setRange(static_cast<int>(lo), static_cast<int>(hi));
       connect(spin, QOverload<int>::of(&QSpinBox::valueChanged), this,
         [this, name](int value) { this->apply(name, value); });

@@ -4,12 +4,12 @@
  *
  * The panel builds its controls from the settings table (vtkVoxelGISettings, generated from
  * Source/VoxelGISettings.json): a check box per boolean, a spin box with the setting's range
- * per number, a combo box per enumeration, grouped (Voxelization, Lighting, Cones, Debug
- * view, Performance) with the settings' documentation as tooltips, and a "Reset to defaults"
- * button. It stays in sync both ways: editing a control sets the pass, and changes made to
- * the pass from code (its ModifiedEvent) update the controls. With a render window given,
- * a read-out of the last frame's stages (ran or skipped, milliseconds) refreshes after every
- * render.
+ * per number (stepping through powers of two where the setting takes only those), a combo box
+ * per enumeration, grouped (Voxelization, Lighting, Cones, Debug view, Performance) with the
+ * settings' documentation as tooltips, and a "Reset to defaults" button. It stays in sync
+ * both ways: editing a control sets the pass, and changes made to the pass from code (its
+ * ModifiedEvent) update the controls. With a render window given, a read-out of the last
+ * frame's stages (ran or skipped, milliseconds) refreshes after every render.
  */
 #ifndef vtkVoxelGISettingsWidget_h
 #define vtkVoxelGISettingsWidget_h

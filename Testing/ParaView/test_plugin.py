@@ -2,7 +2,7 @@
 loads the plugin, creates the "Render View (Voxel GI)", shows a contour of the Wavelet source
 over a floor, sets view properties, renders and compares the screenshot with a baseline
 through vtkTesting; then checks that every setting of the settings table is a property of
-the view and reaches the pass.
+the view and reaches the pass, and that a power-of-two setting offers only powers of two.
 
     pvpython test_plugin.py PLUGIN SETTINGS_JSON BASELINE OUTPUT_DIR
 """
@@ -67,6 +67,13 @@ for s in table:
     if prop not in view.ListProperties():
         failures.append("view has no property " + prop)
         continue
+    if s.get("power_of_two"):
+        domain = view.SMProxy.GetProperty(prop).FindDomain("vtkSMEnumerationDomain")
+        count = domain.GetNumberOfEntries() if domain else 0
+        offered = [domain.GetEntryValue(i) for i in range(count)]
+        powers = [2 ** k for k in range(31) if s["min"] <= 2 ** k <= s["max"]]
+        if offered != powers:
+            failures.append("%s offers %s, not the powers of two %s" % (prop, offered, powers))
     if s["type"] in ("bool",):
         value = 0 if s["default"] else 1
     elif s["type"] in ("int", "enum"):

@@ -1,7 +1,8 @@
 // QtTest for the settings panel and the example viewer (under Xvfb, xcb platform):
-// the panel lists exactly the settings table; its controls set the pass; changes of the pass
-// update the controls; reset restores the defaults; and the viewer's render area matches its
-// baseline image (VOXELGI_BASELINE, through vtkTesting, rendered image left in VOXELGI_TEMP).
+// the panel lists exactly the settings table; its controls set the pass; a power-of-two
+// setting's control offers only powers of two; changes of the pass update the controls;
+// reset restores the defaults; and the viewer's render area matches its baseline image
+// (VOXELGI_BASELINE, through vtkTesting, rendered image left in VOXELGI_TEMP).
 #include "VoxelGIViewerWindow.h"
 #include "vtkVoxelGIPass.h"
 #include "vtkVoxelGISettings.h"
@@ -20,6 +21,8 @@
 #include <QSpinBox>
 #include <QSurfaceFormat>
 #include <QtTest>
+
+#include <utility>
 
 class TestVoxelGIQt : public QObject
 {
@@ -59,6 +62,33 @@ private Q_SLOTS:
     auto* resolution = qobject_cast<QSpinBox*>(panel.control("VoxelResolution"));
     QCOMPARE(resolution->minimum(), 16);
     QCOMPARE(resolution->maximum(), 512);
+  }
+
+  void powerOfTwoControlOffersOnlyPowersOfTwo()
+  {
+    vtkNew<vtkVoxelGIPass> pass;
+    vtkVoxelGISettingsWidget panel;
+    panel.setPass(pass);
+    auto* resolution = qobject_cast<QSpinBox*>(panel.control("VoxelResolution"));
+    QCOMPARE(resolution->value(), 128);
+    resolution->stepBy(1);
+    QCOMPARE(resolution->value(), 256);
+    resolution->stepBy(-2);
+    QCOMPARE(resolution->value(), 64);
+    resolution->stepBy(10);
+    QCOMPARE(resolution->value(), 512);
+    QCOMPARE(pass->GetVoxelResolution(), 512);
+    // typed values end at the power of two the pass rounds them to (ties round up)
+    const std::pair<const char*, int> typed[] = { { "129", 128 }, { "192", 256 }, { "1", 16 } };
+    for (const auto& t : typed)
+    {
+      resolution->selectAll();
+      QTest::keyClicks(resolution, t.first);
+      QTest::keyClick(resolution, Qt::Key_Return);
+      QCOMPARE(resolution->value(), t.second);
+      QCOMPARE(resolution->text(), QString::number(t.second));
+      QCOMPARE(pass->GetVoxelResolution(), t.second);
+    }
   }
 
   void passUpdatesControls()
