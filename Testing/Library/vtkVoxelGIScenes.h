@@ -19,13 +19,13 @@
 #define vtkVoxelGIScenes_h
 
 #include "vtkObject.h"
-#include "vtkRenderingVoxelGIModule.h" // for export macro
+#include "vtkTestingVoxelGIModule.h" // for export macro
 
 class vtkActor;
 class vtkAlgorithm;
 class vtkRenderer;
 
-class VTKRENDERINGVOXELGI_EXPORT vtkVoxelGIScenes : public vtkObject
+class VTKTESTINGVOXELGI_EXPORT vtkVoxelGIScenes : public vtkObject
 {
 public:
   static vtkVoxelGIScenes* New();
