@@ -1,11 +1,11 @@
 // Clears the voxelization accumulators before a revoxelization: everything (clearStatic = 1),
 // or only the voxels the flag volume does not mark static, so static geometry is kept while
 // dynamic actors are voxelized again.
-layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+layout(local_size_x = VOXELGI_LOCAL_SIZE, local_size_y = VOXELGI_LOCAL_SIZE, local_size_z = VOXELGI_LOCAL_SIZE) in;
 
 #include "voxel_common.glsl"
 
-layout(r8ui, binding = 0) uniform uimage3D voxelFlag;
+layout(r8ui, binding = VOXELGI_FLAG_IMAGE_UNIT) uniform uimage3D voxelFlag;
 uniform int clearStatic;
 
 void main()

@@ -1,10 +1,9 @@
-//VTK::System::Dec
-// Composite at the image's resolution: VTK's shaded colour (the direct term) minus what the
+// Composite at the image's resolution, one invocation per pixel in 8x8 tiles: VTK's shaded colour (the direct term) minus what the
 // shadow cones found occluded, darkened by AO, plus the indirect light. The traced buffers
 // may be at a lower resolution: each pixel then blends the four nearest traced samples with
 // bilinear weights times how well their surfaces match its own (position and normal), so that
 // indirect light does not bleed across depth or orientation edges.
-in vec2 texCoord;
+layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "gbuffer_position.glsl"
 
@@ -15,23 +14,37 @@ uniform sampler2D traceShadowed;   // occluded direct rgb
 uniform vec2 traceSize;            // texels of the traced buffers
 uniform float aoStrength;
 uniform int compositeView;         // 0 composite, 1 direct only, 2 indirect only, 3 AO only
+layout(rgba32f, binding = 0) uniform writeonly image2D compositeColor; // linear colour
+layout(rgba32f, binding = 1) uniform writeonly image2D compositeIndirect; // indirect rgb, AO
+layout(rgba8, binding = 2) uniform writeonly image2D compositeDisplay; // clamped, for Present
 
-//VTK::Output::Dec
+void store(ivec2 pixel, vec4 color, vec4 indirect)
+{
+  imageStore(compositeColor, pixel, color);
+  imageStore(compositeIndirect, pixel, indirect);
+  imageStore(compositeDisplay, pixel, vec4(clamp(color.rgb, 0.0, 1.0), color.a));
+}
 
 void main()
 {
-  vec4 color = texture(gbufferColor, texCoord);
+  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(pixel, imageSize(compositeColor))))
+  {
+    return;
+  }
+  vec2 texCoord = (vec2(pixel) + 0.5) / vec2(imageSize(compositeColor));
+  vec4 color = texelFetch(gbufferColor, pixel, 0);
   // VTK's shading of very bright lights can overflow the half-float G-buffer: keep it finite.
-  color.rgb = clamp(mix(color.rgb, vec3(0.0), isnan(color.rgb)), 0.0, 65504.0);
-  float depth = texture(gbufferDepth, texCoord).r;
+  color.rgb = clamp(mix(color.rgb, vec3(0.0), isnan(color.rgb)), 0.0, VOXELGI_HALF_MAX);
+  float depth = texelFetch(gbufferDepth, pixel, 0).r;
   if (depth >= 1.0)
   {
-    gl_FragData[0] = compositeView == 0 || compositeView == 1 ? color : vec4(compositeView == 3 ? vec3(1.0) : vec3(0.0), color.a);
-    gl_FragData[1] = vec4(0.0, 0.0, 0.0, 1.0);
+    store(pixel, compositeView == 0 || compositeView == 1 ? color : vec4(compositeView == 3 ? vec3(1.0) : vec3(0.0), color.a),
+      vec4(0.0, 0.0, 0.0, 1.0));
     return;
   }
   vec3 p = gbufferGridPosition(texCoord, depth);
-  vec3 n = texture(gbufferNormal, texCoord).xyz;
+  vec3 n = texelFetch(gbufferNormal, pixel, 0).xyz;
 
   vec2 f = texCoord * traceSize - 0.5;
   vec2 base = floor(f);
@@ -44,7 +57,7 @@ void main()
     for (int i = 0; i < 2; ++i)
     {
       vec2 uv = (clamp(base + vec2(i, j), vec2(0.0), traceSize - 1.0) + 0.5) / traceSize;
-      float d = texture(gbufferDepth, uv).r;
+      float d = textureLod(gbufferDepth, uv, 0.0).r;
       if (d >= 1.0)
       {
         continue;
@@ -52,13 +65,13 @@ void main()
       float bilinear = (i == 1 ? w.x : 1.0 - w.x) * (j == 1 ? w.y : 1.0 - w.y);
       // positions within about a voxel, normals facing the same way
       float near = exp(-length(gbufferGridPosition(uv, d) - p));
-      vec3 sampleNormal = texture(gbufferNormal, uv).xyz;
+      vec3 sampleNormal = textureLod(gbufferNormal, uv, 0.0).xyz;
       float facing = dot(n, n) > 0.25 && dot(sampleNormal, sampleNormal) > 0.25
         ? pow(max(dot(normalize(n), normalize(sampleNormal)), 0.0), 8.0)
         : 1.0;
       float weight = (bilinear + 1e-3) * near * facing;
-      indirectSum += weight * texture(traceIndirect, uv);
-      shadowedSum += weight * texture(traceShadowed, uv).rgb;
+      indirectSum += weight * textureLod(traceIndirect, uv, 0.0);
+      shadowedSum += weight * textureLod(traceShadowed, uv, 0.0).rgb;
       weightSum += weight;
     }
   }
@@ -80,7 +93,6 @@ void main()
     result = vec3(indirectAO.a);
   }
   // Finite and within the pipeline's half-float range, whatever the lights' intensities.
-  result = (any(isnan(result)) || any(isinf(result))) ? vec3(0.0) : min(result, vec3(65504.0));
-  gl_FragData[0] = vec4(result, color.a);
-  gl_FragData[1] = indirectAO;
+  result = (any(isnan(result)) || any(isinf(result))) ? vec3(0.0) : min(result, vec3(VOXELGI_HALF_MAX));
+  store(pixel, vec4(result, color.a), indirectAO);
 }

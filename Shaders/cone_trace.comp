@@ -1,12 +1,13 @@
-//VTK::System::Dec
-// Per-pixel voxel cone tracing, at the trace resolution (possibly below the image's). From
+// Per-pixel voxel cone tracing, at the trace resolution (possibly below the image's), one
+// invocation per traced pixel in 8x8 tiles (a compute dispatch: on GPUs whose fragment work
+// runs on a few of their units, a full-screen fragment pass is many times slower). From
 // the G-buffer it reconstructs each pixel's position in grid coordinates, traces diffuse
 // cones over the normal's hemisphere (indirect diffuse and AO), one specular cone whose
 // aperture follows the specular power, and a narrow cone toward each light for soft shadows.
 // Outputs: 0 = indirect light (diffuse x albedo + specular) and AO, 1 = the part of VTK's
 // direct shading (Phong, per shadowed light) that the shadow cones find occluded.
-// composite.frag upsamples these and composites them with VTK's shading.
-in vec2 texCoord;
+// composite.comp upsamples these and composites them with VTK's shading.
+layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "lights.glsl"
 #include "cone_tracing.glsl"
@@ -15,7 +16,7 @@ in vec2 texCoord;
 uniform sampler2D gbufferNormal;
 uniform sampler2D gbufferMaterial;
 uniform mat3 normalToGrid;      // view-space normals -> grid directions
-uniform vec3 coneDirections[16];
+uniform vec3 coneDirections[VOXELGI_MAX_CONES];
 uniform int coneCount;
 uniform float diffuseTanHalf;
 uniform float maxDistance;      // voxels
@@ -26,8 +27,8 @@ uniform int specularCone;
 uniform float aoFalloff;
 uniform int coneShadows;
 uniform float shadowTanHalf;
-
-//VTK::Output::Dec
+layout(rgba16f, binding = 0) uniform writeonly image2D traceIndirect; // indirect rgb, AO
+layout(rgba16f, binding = 1) uniform writeonly image2D traceShadowed; // occluded direct rgb
 
 // Half-angle tangent of a cone matching VTK's Phong lobe of this specular power.
 float specularTanHalf(float power)
@@ -35,13 +36,27 @@ float specularTanHalf(float power)
   return clamp(tan(sqrt(2.0 / (max(power, 0.0) + 2.0))), 0.02, 1.2);
 }
 
+// The traced pixel's G-buffer sample (nearest), as the full-screen pass read it.
+vec4 gbufferAt(sampler2D image, vec2 uv)
+{
+  return textureLod(image, uv, 0.0);
+}
+
 void main()
 {
-  float depth = texture(gbufferDepth, texCoord).r;
+  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+  ivec2 size = imageSize(traceIndirect);
+  if (any(greaterThanEqual(pixel, size)))
+  {
+    return;
+  }
+  vec2 texel = 1.0 / vec2(size);
+  vec2 texCoord = (vec2(pixel) + 0.5) * texel;
+  float depth = gbufferAt(gbufferDepth, texCoord).r;
   if (depth >= 1.0)
   {
-    gl_FragData[0] = vec4(0.0, 0.0, 0.0, 1.0);
-    gl_FragData[1] = vec4(0.0);
+    imageStore(traceIndirect, pixel, vec4(0.0, 0.0, 0.0, 1.0));
+    imageStore(traceShadowed, pixel, vec4(0.0));
     return;
   }
   vec3 p = gbufferGridPosition(texCoord, depth);
@@ -49,12 +64,16 @@ void main()
   vec3 farP = gbufferGridPosition(texCoord, 1.0);
   vec3 viewDir = normalize(farP - nearP);
 
-  vec4 normalSpec = texture(gbufferNormal, texCoord);
+  vec4 normalSpec = gbufferAt(gbufferNormal, texCoord);
   vec3 n = normalSpec.xyz;
   if (dot(n, n) < 0.25)
   {
-    // VTK computed no normal (unlit actor): take the depth surface's own.
-    n = cross(dFdx(p), dFdy(p));
+    // VTK computed no normal (unlit actor): take the depth surface's own, from the next
+    // traced pixels' positions.
+    vec2 dx = texCoord + vec2(texel.x, 0.0);
+    vec2 dy = texCoord + vec2(0.0, texel.y);
+    n = cross(gbufferGridPosition(dx, gbufferAt(gbufferDepth, dx).r) - p,
+      gbufferGridPosition(dy, gbufferAt(gbufferDepth, dy).r) - p);
     n = dot(n, n) > 0.0 ? normalize(n) : -viewDir;
   }
   else
@@ -65,7 +84,7 @@ void main()
   {
     n = -n;
   }
-  vec4 material = texture(gbufferMaterial, texCoord);
+  vec4 material = gbufferAt(gbufferMaterial, texCoord);
   vec3 albedo = material.rgb;
   float specular = material.a;
   vec3 origin = p + n * startOffset;
@@ -125,6 +144,6 @@ void main()
   // Never let a non-finite value through.
   bool finite = !any(isnan(indirect)) && !any(isinf(indirect)) && !any(isnan(shadowed)) &&
     !any(isinf(shadowed)) && !isnan(ao);
-  gl_FragData[0] = finite ? vec4(indirect, clamp(ao, 0.0, 1.0)) : vec4(0.0, 0.0, 0.0, 1.0);
-  gl_FragData[1] = finite ? vec4(shadowed, 1.0) : vec4(0.0);
+  imageStore(traceIndirect, pixel, finite ? vec4(indirect, clamp(ao, 0.0, 1.0)) : vec4(0.0, 0.0, 0.0, 1.0));
+  imageStore(traceShadowed, pixel, finite ? vec4(shadowed, 1.0) : vec4(0.0));
 }

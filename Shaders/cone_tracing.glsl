@@ -1,6 +1,8 @@
 // Voxel cone tracing over the radiance volume and its anisotropic mipmaps (six directional
 // volumes at half resolution, one per axis direction a cone can travel), shared by the
-// per-pixel trace and the per-voxel bounce. Needs lights.glsl (grid size) first.
+// per-pixel trace and the per-voxel bounce.
+#include "voxel_grid.glsl"
+
 uniform sampler3D voxelRadiance; // rgb radiance premultiplied by a (occupancy); mips if isotropic
 uniform sampler3D voxelPosX;
 uniform sampler3D voxelNegX;
@@ -15,7 +17,7 @@ uniform float coneStepFactor; // step length as a fraction of the cone diameter
 // Sample for a cone of `diameter` voxels travelling along `dir` at p (grid coordinates).
 vec4 voxelSampleCone(vec3 p, float diameter, vec3 dir)
 {
-  vec3 uvw = p / voxelGridInfo.y;
+  vec3 uvw = p / float(voxelResolution);
   float level = max(log2(max(diameter, 1.0)), voxelMinLevel);
   if (voxelIsotropic != 0)
   {
@@ -48,7 +50,7 @@ vec4 voxelConeTrace(vec3 origin, vec3 dir, float tanHalf, float start, float max
 {
   vec4 acc = vec4(0.0);
   occlusion = 0.0;
-  float res = voxelGridInfo.y;
+  float res = float(voxelResolution);
   float stepFactor = max(coneStepFactor, 0.05);
   float t = max(start, 0.5);
   // The step count is bounded whatever the settings: no endless loops.

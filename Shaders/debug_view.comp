@@ -1,9 +1,8 @@
-//VTK::System::Dec
-// Shows the voxel volumes as the image: each pixel marches its camera ray through the grid
-// (Amanatides-Woo traversal) and shows the first occupied voxel's albedo, normal, emission or
-// radiance,
-// shaded a little by the voxel face the ray entered through so equal colours stay readable.
-in vec2 texCoord;
+// Shows the voxel volumes as the image: each pixel (one invocation, 8x8 tiles) marches its
+// camera ray through the grid (Amanatides-Woo traversal) and shows the first occupied voxel's
+// albedo, normal, emission or radiance, shaded a little by the voxel face the ray entered
+// through so equal colours stay readable.
+layout(local_size_x = 8, local_size_y = 8) in;
 
 uniform sampler3D voxelAlbedo;
 uniform sampler3D voxelNormal;
@@ -11,15 +10,19 @@ uniform sampler3D voxelEmission;
 uniform sampler3D voxelRadiance;
 uniform int hasEmission;
 uniform mat4 voxelFromNDC;   // normalized device coordinates -> voxel coordinates
-uniform int voxelResolution;
+#include "voxel_grid.glsl"
 uniform int debugView;       // 1: albedo, 2: normal, 3: emission, 4: radiance
 uniform vec3 backgroundColor;
-
-//VTK::Output::Dec
+layout(rgba8, binding = 0) uniform writeonly image2D debugImage;
 
 void main()
 {
-  vec2 ndc = texCoord * 2.0 - 1.0;
+  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(pixel, imageSize(debugImage))))
+  {
+    return;
+  }
+  vec2 ndc = (vec2(pixel) + 0.5) / vec2(imageSize(debugImage)) * 2.0 - 1.0;
   vec4 a = voxelFromNDC * vec4(ndc, -1.0, 1.0);
   vec4 b = voxelFromNDC * vec4(ndc, 1.0, 1.0);
   vec3 ro = a.xyz / a.w;
@@ -89,5 +92,5 @@ void main()
       }
     }
   }
-  gl_FragData[0] = vec4(color, 1.0);
+  imageStore(debugImage, pixel, vec4(color, 1.0));
 }

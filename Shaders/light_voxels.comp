@@ -2,7 +2,7 @@
 // (VTK's light model, normal-weighted attenuation of the deferred-voxel-shading technique,
 // occlusion by soft voxel shadows raymarched toward the light or, with VOXELGI_SHADOW_MAPS,
 // by the directional and spot lights' shadow maps) plus the voxel's emission.
-layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+layout(local_size_x = VOXELGI_LOCAL_SIZE, local_size_y = VOXELGI_LOCAL_SIZE, local_size_z = VOXELGI_LOCAL_SIZE) in;
 
 #include "lights.glsl"
 
@@ -20,12 +20,11 @@ layout(rgba16f, binding = 0) uniform writeonly image3D radianceOut;
 layout(rgba16f, binding = 1) uniform writeonly image3D directOut;
 uniform int writeDirect;
 
-const float maxHalf = 65504.0;
 
 // Transmittance from p toward the light: products of (1 - occupancy) along the ray.
 float voxelShadow(vec3 p, vec3 side, vec3 toLight, float distance)
 {
-  float res = voxelGridInfo.y;
+  float res = float(voxelResolution);
   // Leave the voxel's own surface layer (conservative voxelization makes it up to two
   // voxels thick) before testing for occluders, also toward grazing lights.
   vec3 origin = p + side * 1.5;
@@ -74,7 +73,7 @@ float voxelNormalWeighted(vec3 n, vec3 toLight, bool twoSided)
 void main()
 {
   ivec3 v = ivec3(gl_GlobalInvocationID);
-  int res = int(voxelGridInfo.y);
+  int res = voxelResolution;
   if (any(greaterThanEqual(v, ivec3(res))))
   {
     return;
@@ -107,7 +106,7 @@ void main()
 #endif
       radiance += albedo.rgb * voxelLights[l].color.rgb * (attenuation * lambert * visibility);
     }
-    result = vec4(min(radiance, vec3(maxHalf)), 1.0);
+    result = vec4(min(radiance, vec3(VOXELGI_HALF_MAX)), 1.0);
   }
   imageStore(radianceOut, v, result);
   if (writeDirect != 0)

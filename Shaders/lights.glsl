@@ -1,7 +1,7 @@
 // The renderer's lights in voxel grid coordinates (one uniform block, filled once per frame)
 // and VTK's light model (as vtkOpenGLPolyDataMapper shades: positional attenuation, spot cone
 // and exponent) evaluated in the same space.
-#define VOXELGI_MAX_LIGHTS 16
+#include "voxel_grid.glsl"
 
 struct VoxelLight
 {
@@ -11,11 +11,10 @@ struct VoxelLight
   vec4 attenuation; // xyz: constant, linear, quadratic (world units); w: 1 for a headlight
 };
 
-layout(std140) uniform VoxelLightBlock
+layout(std140, binding = VOXELGI_LIGHT_BLOCK_BINDING) uniform VoxelLightBlock
 {
   VoxelLight voxelLights[VOXELGI_MAX_LIGHTS];
   ivec4 voxelLightInfo; // x: light count, y: two-sided lighting
-  vec4 voxelGridInfo;   // x: voxel size (world units), y: voxels per axis
 };
 
 // Unit direction toward light `l` from p (grid coordinates), the distance to it (voxels;
@@ -32,7 +31,7 @@ float voxelLightIncidence(int l, vec3 p, out vec3 toLight, out float distance)
   vec3 d = light.position.xyz - p;
   distance = length(d);
   toLight = distance > 0.0 ? d / distance : vec3(0.0, 0.0, 1.0);
-  float w = distance * voxelGridInfo.x;
+  float w = distance * voxelSize;
   float attenuation =
     1.0 / max(light.attenuation.x + light.attenuation.y * w + light.attenuation.z * w * w, 1e-20);
   if (light.direction.w > -1.5)

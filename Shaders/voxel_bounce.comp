@@ -2,7 +2,7 @@
 // (or six axis cones over the sphere where normals cancel) gather the previous radiance from
 // the mipmaps; radiance = direct + albedo x gathered. The cone weights sum to one and the
 // albedo is below one, so repeated bounces converge from below (energy bounded).
-layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+layout(local_size_x = VOXELGI_LOCAL_SIZE, local_size_y = VOXELGI_LOCAL_SIZE, local_size_z = VOXELGI_LOCAL_SIZE) in;
 
 #include "lights.glsl"
 #include "cone_tracing.glsl"
@@ -10,18 +10,17 @@ layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 uniform sampler3D voxelAlbedo;
 uniform sampler3D voxelNormal;
 uniform sampler3D voxelDirect;
-uniform vec3 coneDirections[16]; // tangent space (z along the normal), cosine distributed
+uniform vec3 coneDirections[VOXELGI_MAX_CONES]; // tangent space (z along the normal), cosine distributed
 uniform int coneCount;
 uniform float coneTanHalf;
 uniform float maxDistance;
 layout(rgba16f, binding = 0) uniform writeonly image3D radianceOut;
 
-const float maxHalf = 65504.0;
 
 void main()
 {
   ivec3 v = ivec3(gl_GlobalInvocationID);
-  int res = int(voxelGridInfo.y);
+  int res = voxelResolution;
   if (any(greaterThanEqual(v, ivec3(res))))
   {
     return;
@@ -58,5 +57,5 @@ void main()
     }
     gathered /= float(coneCount);
   }
-  imageStore(radianceOut, v, vec4(min(direct.rgb + albedo.rgb * gathered, vec3(maxHalf)), 1.0));
+  imageStore(radianceOut, v, vec4(min(direct.rgb + albedo.rgb * gathered, vec3(VOXELGI_HALF_MAX)), 1.0));
 }

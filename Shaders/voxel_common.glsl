@@ -19,7 +19,7 @@ layout(std430, binding = 8) buffer VoxelEmissionGBuffer { uint voxelEmissionG[];
 layout(std430, binding = 9) buffer VoxelEmissionBBuffer { uint voxelEmissionB[]; };
 #endif
 
-uniform int voxelResolution;
+#include "voxel_grid.glsl"
 
 int voxelIndex(ivec3 v)
 {

@@ -2,7 +2,7 @@
 // cone travels) from the level below, or from the radiance volume for level 0. Along each
 // direction the two voxels of a 2x2x2 block are composited front to back (volumetric
 // integration), then the four results are averaged.
-layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+layout(local_size_x = VOXELGI_LOCAL_SIZE, local_size_y = VOXELGI_LOCAL_SIZE, local_size_z = VOXELGI_LOCAL_SIZE) in;
 
 uniform sampler3D voxelRadiance;
 uniform sampler3D voxelPosX;

@@ -1,6 +1,6 @@
 // Turns the accumulated sums into the voxel volumes the later stages sample: mean albedo
 // (alpha = occupied), mean unit normal (zero where the normals cancel out) and mean emission.
-layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+layout(local_size_x = VOXELGI_LOCAL_SIZE, local_size_y = VOXELGI_LOCAL_SIZE, local_size_z = VOXELGI_LOCAL_SIZE) in;
 
 #include "voxel_common.glsl"
 
@@ -11,8 +11,6 @@ layout(rgba16f, binding = 3) uniform writeonly image3D voxelEmission;
 uniform float emissionScale;
 #endif
 
-// Largest finite half float: emission beyond it would turn into Inf in an RGBA16F volume.
-const float maxHalf = 65504.0;
 
 void main()
 {
@@ -34,7 +32,7 @@ void main()
     float len = length(m);
     normal = vec4((len > 1e-3 ? m / len : vec3(0.0)) * 0.5 + 0.5, 1.0);
 #if VOXEL_CHANNELS > 7
-    emission = min(voxelMean(voxelEmissionR[i], voxelEmissionG[i], voxelEmissionB[i], n) * emissionScale, vec3(maxHalf));
+    emission = min(voxelMean(voxelEmissionR[i], voxelEmissionG[i], voxelEmissionB[i], n) * emissionScale, vec3(VOXELGI_HALF_MAX));
 #endif
   }
   imageStore(voxelAlbedo, v, albedo);

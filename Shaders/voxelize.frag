@@ -4,7 +4,7 @@
 
 uniform int voxelStaticPass;  // 1: marks the flag volume; 0: dynamic, leaves static voxels alone
 uniform vec3 voxelEmission;   // this actor's emission divided by the scene's emission scale
-layout(r8ui) uniform uimage3D voxelFlag;
+layout(r8ui, binding = VOXELGI_FLAG_IMAGE_UNIT) uniform uimage3D voxelFlag;
 
 flat in int voxelAxis;
 flat in vec4 voxelBox;

@@ -1,4 +1,5 @@
 //VTK::System::Dec
+#extension GL_ARB_shading_language_420pack : require
 // Voxelization geometry shader, injected into VTK's polydata mapper by vtkVoxelGIPass.
 //
 // Input positions are in the normalized device coordinates of the voxel grid cube (the pass
@@ -30,7 +31,7 @@
 layout(triangles) in;
 layout(triangle_strip, max_vertices = 3) out;
 
-uniform int voxelResolution;
+#include "voxel_grid.glsl"
 uniform int voxelDilate;       // 0 when the hardware rasterizes conservatively
 
 flat out int voxelAxis;        // 0: x, 1: y, 2: z dominant

@@ -1,77 +1,53 @@
 /**
- * ConeTrace and Composite stages: a full-screen pass over the G-buffer, at the trace
- * resolution, traces diffuse, specular and shadow cones through the voxel mipmaps; a second
- * one at the image's resolution upsamples that (edge-aware) and composites it with VTK's
- * shading into a float image (plus an indirect + AO image); Present then draws the result
- * into VTK's framebuffer with the scene depth.
+ * ConeTrace stage (cone_trace.comp, a compute dispatch in 8x8 tiles): per pixel of the G-buffer, at the trace resolution
+ * (TraceResolution of the image's), diffuse cones over the normal's hemisphere (indirect
+ * diffuse and AO), one specular cone whose aperture follows the specular power, and a narrow
+ * cone toward each light for soft shadows, through the radiance mipmaps. Outputs: indirect
+ * light + AO, and the part of VTK's direct shading the shadow cones find occluded.
  */
-#ifndef VoxelGIConeTracer_h
-#define VoxelGIConeTracer_h
+#ifndef VoxelGIConeTrace_h
+#define VoxelGIConeTrace_h
 
-#include "vtkOpenGLFramebufferObject.h" // for vtkSmartPointer
-#include "vtkSmartPointer.h"
-#include "vtkTextureObject.h"             // for vtkSmartPointer
+#include "ConeTracing.h"
 
-#include <memory>
-#include <vector>
+#include "vtkSmartPointer.h"  // for vtkSmartPointer
+#include "vtkTextureObject.h" // for vtkSmartPointer
 
-class vtkOpenGLFramebufferObject;
-class vtkOpenGLQuadHelper;
-class vtkOpenGLRenderWindow;
-class vtkRenderer;
-class vtkTextureObject;
+#include <string>
+
 class vtkWindow;
 
 namespace voxelgi
 {
-class GBuffer;
-class VoxelLighting;
+struct Frame;
+class GBufferPass;
+class LightVoxels;
 class VoxelMipmap;
-struct ConeSettings;
-struct VoxelGrid;
 
-/// Per-pixel settings of the trace and composite.
-struct TraceSettings
-{
-  float StartOffset = 1.f;
-  float IndirectIntensity = 1.f;
-  float SpecularIntensity = 1.f;
-  bool SpecularCone = true;
-  float AOStrength = 0.5f;
-  float AOFalloff = 0.05f;
-  bool ConeShadows = true;
-  float ShadowTanHalf = 0.05f;
-  int View = 0;      // 0 composite, 1 direct, 2 indirect, 3 AO
-  float Scale = 1.f; // trace resolution / image resolution
-};
-
-class ConeTracer
+class ConeTrace
 {
 public:
-  ConeTracer();
-  ~ConeTracer();
+  ConeTrace(const GBufferPass& gbuffer, const LightVoxels& lighting, const VoxelMipmap& mipmap);
 
-  /// Trace and composite into the float images.
-  void Trace(vtkRenderer* renderer, const VoxelGrid& grid, const GBuffer& gbuffer,
-    const VoxelLighting& lighting, const VoxelMipmap& mips, const ConeSettings& cones,
-    const TraceSettings& settings);
-  /// Draw the composite into the currently bound framebuffer at (x, y, w, h), with depth.
-  void Present(vtkOpenGLRenderWindow* renWin, const GBuffer& gbuffer, int x, int y, int w, int h);
-
-  /// Read back the last composite (0) or indirect + AO image (1) as RGBA floats.
-  bool Read(vtkOpenGLRenderWindow* renWin, int image, std::vector<float>& rgba, int& w, int& h);
-
+  /// Size the traced images for the frame's viewport and trace resolution; build the program.
+  bool Prepare(const Frame& frame, std::string& error);
+  void Run(const Frame& frame);
   void ReleaseGraphicsResources(vtkWindow* window);
 
+  /// Indirect rgb + AO, and occluded direct rgb, at the trace resolution.
+  vtkTextureObject* GetIndirect() const { return this->Indirect; }
+  vtkTextureObject* GetShadowed() const { return this->Shadowed; }
+
 private:
-  std::unique_ptr<vtkOpenGLQuadHelper> TraceQuad;
-  std::unique_ptr<vtkOpenGLQuadHelper> CompositeQuad;
-  std::unique_ptr<vtkOpenGLQuadHelper> PresentQuad;
-  vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
-  vtkSmartPointer<vtkTextureObject> TraceIndirect; // trace resolution
-  vtkSmartPointer<vtkTextureObject> TraceShadowed;
-  vtkSmartPointer<vtkTextureObject> Composite; // image resolution
+  void SetUniforms(const Frame& frame);
+
+  const GBufferPass& GBuffer;
+  const LightVoxels& Lighting;
+  const VoxelMipmap& Mipmap;
+  ConeSettings Cones;
+  ComputeProgram Program;
   vtkSmartPointer<vtkTextureObject> Indirect;
+  vtkSmartPointer<vtkTextureObject> Shadowed;
 };
 
 }

@@ -1,85 +1,74 @@
-#include "VoxelDebugView.h"
+#include "DebugView.h"
 
+#include "Frame.h"
 #include "GridView.h"
+#include "LightVoxels.h"
 #include "VoxelGIShaders.h"
-#include "VoxelGrid.h"
-#include "GLHelpers.h"
-#include "Voxelizer.h"
+#include "VoxelizePass.h"
+#include "vtkVoxelGIPass.h"
 
-#include "vtkOpenGLQuadHelper.h"
-#include "vtkOpenGLRenderUtilities.h"
 #include "vtkOpenGLRenderWindow.h"
-#include "vtkOpenGLShaderCache.h"
-#include "vtkOpenGLState.h"
 #include "vtkRenderer.h"
-#include "vtkShaderProgram.h"
 #include "vtk_glew.h"
+
+#include <array>
 
 namespace voxelgi
 {
 
-VoxelDebugView::VoxelDebugView() = default;
-VoxelDebugView::~VoxelDebugView() = default;
-
-void VoxelDebugView::Render(vtkRenderer* renderer, const VoxelGrid& grid, const Voxelizer& voxels,
-  const Volume3D& radiance, int view)
+DebugView::DebugView(const VoxelizePass& voxels, const LightVoxels& lighting)
+  : Voxels(voxels)
+  , Lighting(lighting)
 {
-  auto* renWin = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
-  if (!this->Quad)
-  {
-    this->Quad.reset(new vtkOpenGLQuadHelper(renWin,
-      vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), shaders::debug_view_frag,
-      ""));
-  }
-  else
-  {
-    renWin->GetShaderCache()->ReadyShaderProgram(this->Quad->Program);
-  }
-  vtkShaderProgram* program = this->Quad->Program;
-  if (!program || !program->GetCompiled())
-  {
-    return;
-  }
-
-  int width = 0, height = 0, x = 0, y = 0;
-  renderer->GetTiledSizeAndOrigin(&width, &height, &x, &y);
-  float columnMajor[16];
-  GridFromNDC(renderer, grid, columnMajor);
-
-  SamplerBindings samplers(renWin);
-  program->SetUniformi("voxelAlbedo", samplers.Add(voxels.AlbedoVolume));
-  program->SetUniformi("voxelNormal", samplers.Add(voxels.NormalVolume));
-  // Volumes a scene lacks still need a 3D texture of the sampler's type behind them.
-  program->SetUniformi("voxelEmission",
-    samplers.Add(voxels.HasEmission() ? voxels.EmissionVolume : voxels.AlbedoVolume));
-  program->SetUniformi("voxelRadiance",
-    samplers.Add(radiance.IsAllocated() ? radiance : voxels.AlbedoVolume));
-  program->SetUniformi("hasEmission", voxels.HasEmission() ? 1 : 0);
-  program->SetUniformMatrix4x4("voxelFromNDC", columnMajor);
-  program->SetUniformi("voxelResolution", grid.Resolution);
-  program->SetUniformi("debugView", view);
-  double* bg = renderer->GetBackground();
-  const float background[3] = { static_cast<float>(bg[0]), static_cast<float>(bg[1]),
-    static_cast<float>(bg[2]) };
-  program->SetUniform3f("backgroundColor", background);
-
-  vtkOpenGLState* ostate = renWin->GetState();
-  vtkOpenGLState::ScopedglViewport viewport(ostate);
-  vtkOpenGLState::ScopedglEnableDisable depthTest(ostate, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglEnableDisable blend(ostate, GL_BLEND);
-  ostate->vtkglViewport(x, y, width, height);
-  ostate->vtkglDisable(GL_DEPTH_TEST);
-  ostate->vtkglDisable(GL_BLEND);
-  this->Quad->Render();
 }
 
-void VoxelDebugView::ReleaseGraphicsResources(vtkWindow* window)
+bool DebugView::Prepare(const Frame& frame, std::string& error)
 {
-  if (this->Quad)
+  if (!this->Image)
   {
-    this->Quad->ReleaseGraphicsResources(window);
-    this->Quad.reset();
+    this->Image = NewImageTexture(frame.Window, GL_RGBA8, frame.Width, frame.Height);
   }
+  this->Image->Resize(frame.Width, frame.Height);
+  return this->Program.BuildOnce(shaders::debug_view_comp, "debug view", error);
+}
+
+void DebugView::Run(const Frame& frame)
+{
+  ScopedStage stage(*frame.Clock, vtkVoxelGIPass::STAGE_DEBUG_VIEW);
+  ComputeProgram& p = this->Program;
+  p.Use(frame.Window);
+  const VoxelizePass& voxels = this->Voxels;
+  const Volume3D& radiance = this->Lighting.GetRadiance();
+  float columnMajor[16];
+  GridFromNDC(frame.Renderer, frame.Grid, columnMajor);
+
+  SamplerBindings samplers(frame.Window);
+  p.SetInt("voxelAlbedo", samplers.Add(voxels.GetAlbedo()));
+  p.SetInt("voxelNormal", samplers.Add(voxels.GetNormal()));
+  // Volumes a scene lacks still need a 3D texture of the sampler's type behind them.
+  p.SetInt("voxelEmission",
+    samplers.Add(voxels.HasEmission() ? voxels.GetEmission() : voxels.GetAlbedo()));
+  p.SetInt("voxelRadiance", samplers.Add(radiance.IsAllocated() ? radiance : voxels.GetAlbedo()));
+  p.SetInt("hasEmission", voxels.HasEmission() ? 1 : 0);
+  p.SetMat4Array("voxelFromNDC", 1, columnMajor);
+  p.SetInt("debugView", frame.Config.DebugView);
+  const double* bg = frame.Renderer->GetBackground();
+  p.SetVec3Array("backgroundColor", 1,
+    std::array<float, 3>{ { static_cast<float>(bg[0]), static_cast<float>(bg[1]),
+      static_cast<float>(bg[2]) } }.data());
+  BindImage2D(0, this->Image, GL_WRITE_ONLY, GL_RGBA8);
+  p.DispatchImage(frame.Width, frame.Height, 8);
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+}
+
+void DebugView::ReleaseGraphicsResources(vtkWindow* window)
+{
+  if (this->Image)
+  {
+    this->Image->ReleaseGraphicsResources(window);
+  }
+  this->Image = nullptr;
+  this->Program.Release();
 }
 
 }

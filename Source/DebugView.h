@@ -1,37 +1,43 @@
 /**
- * Debug view stage: draws the voxel volumes as the image, seen through the renderer's
- * camera, so a user can check what was voxelized (albedo, normal or emission).
+ * DebugView stage (debug_view.comp, a compute dispatch in 8x8 tiles): the voxel volumes as an
+ * RGBA8 image of the viewport, seen through the renderer's camera, so a user can check what
+ * was voxelized (albedo, normal, emission) and how it is lit (radiance). Present draws it.
  */
-#ifndef VoxelGIVoxelDebugView_h
-#define VoxelGIVoxelDebugView_h
+#ifndef VoxelGIDebugView_h
+#define VoxelGIDebugView_h
 
-#include <memory>
+#include "GLHelpers.h"
 
-class vtkOpenGLQuadHelper;
-class vtkOpenGLRenderWindow;
-class vtkRenderer;
+#include "vtkSmartPointer.h"  // for vtkSmartPointer
+#include "vtkTextureObject.h" // for vtkSmartPointer
+
+#include <string>
+
 class vtkWindow;
 
 namespace voxelgi
 {
-class Voxelizer;
-class Volume3D;
-struct VoxelGrid;
+struct Frame;
+class LightVoxels;
+class VoxelizePass;
 
-class VoxelDebugView
+class DebugView
 {
 public:
-  VoxelDebugView();
-  ~VoxelDebugView();
+  DebugView(const VoxelizePass& voxels, const LightVoxels& lighting);
 
-  /// Draw over the renderer's viewport in the currently bound framebuffer.
-  /// `view`: 1 albedo, 2 normal, 3 emission, 4 radiance.
-  void Render(vtkRenderer* renderer, const VoxelGrid& grid, const Voxelizer& voxels,
-    const Volume3D& radiance, int view);
+  /// Size the image for the frame's viewport; build the program.
+  bool Prepare(const Frame& frame, std::string& error);
+  /// Render the frame's voxel debug view into the image.
+  void Run(const Frame& frame);
+  vtkTextureObject* GetImage() const { return this->Image; }
   void ReleaseGraphicsResources(vtkWindow* window);
 
 private:
-  std::unique_ptr<vtkOpenGLQuadHelper> Quad;
+  const VoxelizePass& Voxels;
+  const LightVoxels& Lighting;
+  ComputeProgram Program;
+  vtkSmartPointer<vtkTextureObject> Image;
 };
 
 }

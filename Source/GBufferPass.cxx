@@ -1,45 +1,48 @@
-#include "GBuffer.h"
+#include "GBufferPass.h"
 
+#include "Frame.h"
+#include "GLHelpers.h"
 #include "VoxelGIShaders.h"
+#include "vtkVoxelGIPass.h"
 
 #include "vtkActor.h"
+#include "vtkCameraPass.h"
+#include "vtkObjectFactory.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLPolyDataMapper.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkProperty.h"
+#include "vtkRenderPassCollection.h"
+#include "vtkRenderState.h"
+#include "vtkRenderStepsPass.h"
+#include "vtkSequencePass.h"
 #include "vtkShaderProgram.h"
-#include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
 namespace voxelgi
 {
 
-namespace
+vtkStandardNewMacro(GBufferPass);
+
+GBufferPass::GBufferPass()
 {
-vtkSmartPointer<vtkTextureObject> NewTexture(vtkOpenGLRenderWindow* renWin, int internalFormat)
-{
-  auto texture = vtkSmartPointer<vtkTextureObject>::New();
-  texture->SetContext(renWin);
-  texture->SetInternalFormat(internalFormat);
-  texture->SetFormat(GL_RGBA);
-  texture->SetMinificationFilter(vtkTextureObject::Nearest);
-  texture->SetMagnificationFilter(vtkTextureObject::Nearest);
-  texture->SetWrapS(vtkTextureObject::ClampToEdge);
-  texture->SetWrapT(vtkTextureObject::ClampToEdge);
-  return texture;
-}
+  this->OpaqueSequence->SetPasses(this->OpaquePasses);
+  this->OpaqueCamera->SetDelegatePass(this->OpaqueSequence);
 }
 
-void GBuffer::Prepare(vtkOpenGLRenderWindow* renWin, int width, int height)
+GBufferPass::~GBufferPass() = default;
+
+//------------------------------------------------------------------------------
+bool GBufferPass::Prepare(const Frame& frame, std::string&)
 {
+  const int width = frame.Width;
+  const int height = frame.Height;
   if (!this->Framebuffer)
   {
-    this->Color = NewTexture(renWin, GL_RGBA16F);
-    this->Color->Allocate2D(width, height, 4, VTK_FLOAT);
-    this->Normal = NewTexture(renWin, GL_RGBA16F);
-    this->Normal->Allocate2D(width, height, 4, VTK_FLOAT);
-    this->Material = NewTexture(renWin, GL_RGBA8);
-    this->Material->Allocate2D(width, height, 4, VTK_UNSIGNED_CHAR);
+    vtkOpenGLRenderWindow* renWin = frame.Window;
+    this->Color = NewImageTexture(renWin, GL_RGBA16F, width, height);
+    this->Normal = NewImageTexture(renWin, GL_RGBA16F, width, height);
+    this->Material = NewImageTexture(renWin, GL_RGBA8, width, height);
     this->Depth = vtkSmartPointer<vtkTextureObject>::New();
     this->Depth->SetContext(renWin);
     this->Depth->SetMinificationFilter(vtkTextureObject::Nearest);
@@ -52,9 +55,54 @@ void GBuffer::Prepare(vtkOpenGLRenderWindow* renWin, int width, int height)
   this->Normal->Resize(width, height);
   this->Material->Resize(width, height);
   this->Depth->Resize(width, height);
+  if (frame.LitScene != this->LitScene)
+  {
+    this->LitScene = frame.LitScene;
+    this->ShaderStageTime.Modified(); // gbuffer.frag depends on it
+  }
+  return true;
 }
 
-void GBuffer::Begin()
+//------------------------------------------------------------------------------
+void GBufferPass::Run(const Frame& frame)
+{
+  ScopedStage stage(*frame.Clock, vtkVoxelGIPass::STAGE_GBUFFER);
+  // VTK's camera, lights and opaque steps (the whole delegate if it is not a
+  // vtkRenderStepsPass) into the framebuffer.
+  this->Opaque = frame.Delegate;
+  if (auto* steps = vtkRenderStepsPass::SafeDownCast(frame.Delegate))
+  {
+    this->OpaquePasses->RemoveAllItems();
+    for (vtkRenderPass* pass : { steps->GetLightsPass(), steps->GetOpaquePass() })
+    {
+      if (pass)
+      {
+        this->OpaquePasses->AddItem(pass);
+      }
+    }
+    this->Opaque = this->OpaqueCamera;
+  }
+  vtkRenderState state(frame.Renderer);
+  state.SetPropArrayAndCount(frame.State->GetPropArray(), frame.State->GetPropArrayCount());
+  state.SetFrameBuffer(this->Framebuffer);
+  this->Render(&state);
+}
+
+void GBufferPass::Render(const vtkRenderState* s)
+{
+  this->NumberOfRenderedProps = 0;
+  this->PreRender(s);
+  this->Begin();
+  if (this->Opaque)
+  {
+    this->Opaque->Render(s);
+    this->NumberOfRenderedProps += this->Opaque->GetNumberOfRenderedProps();
+  }
+  this->End();
+  this->PostRender(s);
+}
+
+void GBufferPass::Begin()
 {
   this->Framebuffer->SaveCurrentBindingsAndBuffers();
   this->Framebuffer->Bind();
@@ -71,14 +119,14 @@ void GBuffer::Begin()
   DisableDataBlending();
 }
 
-void GBuffer::DisableDataBlending()
+void GBufferPass::DisableDataBlending()
 {
   // VTK blends its opaque pass; the data attachments must be written as they are.
   glDisablei(GL_BLEND, 1);
   glDisablei(GL_BLEND, 2);
 }
 
-void GBuffer::End()
+void GBufferPass::End()
 {
   for (unsigned int i = 0; i < 2; ++i)
   {
@@ -91,8 +139,14 @@ void GBuffer::End()
   this->Framebuffer->RestorePreviousBindingsAndBuffers();
 }
 
-void GBuffer::PostReplaceShaders(std::string& fragment, vtkProp* prop, bool litScene)
+//------------------------------------------------------------------------------
+bool GBufferPass::PostReplaceShaderValues(
+  std::string&, std::string&, std::string& fragment, vtkAbstractMapper* mapper, vtkProp* prop)
 {
+  if (!vtkOpenGLPolyDataMapper::SafeDownCast(mapper))
+  {
+    return true;
+  }
   std::string defines;
   if (fragment.find("normalVCVSOutput") != std::string::npos)
   {
@@ -107,7 +161,7 @@ void GBuffer::PostReplaceShaders(std::string& fragment, vtkProp* prop, bool litS
     defines += "#define VOXELGI_HAS_SPECULAR\n";
   }
   vtkActor* actor = vtkActor::SafeDownCast(prop);
-  if (!litScene && actor && actor->GetProperty()->GetLighting())
+  if (!this->LitScene && actor && actor->GetProperty()->GetLighting())
   {
     defines += "#define VOXELGI_AMBIENT_ONLY\n";
   }
@@ -117,16 +171,21 @@ void GBuffer::PostReplaceShaders(std::string& fragment, vtkProp* prop, bool litS
   {
     fragment.insert(end, shaders::gbuffer_frag);
   }
+  return true;
 }
 
-void GBuffer::SetShaderParameters(vtkAbstractMapper* mapper)
+bool GBufferPass::SetShaderParameters(
+  vtkShaderProgram*, vtkAbstractMapper* mapper, vtkProp*, vtkOpenGLVertexArrayObject*)
 {
+  // Polydata mappers write all attachments, other mappers only the colour.
   this->Framebuffer->ActivateDrawBuffers(vtkOpenGLPolyDataMapper::SafeDownCast(mapper) ? 3 : 1);
   // Before every draw: VTK's state handling may have re-enabled blending for all buffers.
   DisableDataBlending();
+  return true;
 }
 
-void GBuffer::ReleaseGraphicsResources(vtkWindow* window)
+//------------------------------------------------------------------------------
+void GBufferPass::ReleaseGraphicsResources(vtkWindow* window)
 {
   for (vtkTextureObject* texture : { this->Color.Get(), this->Normal.Get(), this->Material.Get(),
          this->Depth.Get() })

@@ -1,55 +1,82 @@
 /**
- * GBuffer stage: VTK renders the opaque geometry (its own shading kept in attachment 0) into
- * the pass's framebuffer, while fragment code injected into its polydata mappers adds the
- * view-space normal and specular power (attachment 1) and the albedo and specular intensity
- * (attachment 2); depth goes to a float texture (the vtkSSAOPass pattern).
+ * GBuffer stage: an internal render pass in which VTK renders the frame's camera, lights and
+ * opaque geometry (its own shading kept in attachment 0) into the pass's framebuffer, while
+ * fragment code it injects into the polydata mappers (gbuffer.frag) adds the view-space
+ * normal and specular power (attachment 1) and the albedo and specular intensity
+ * (attachment 2); depth goes to a float texture (the vtkSSAOPass pattern). A delegate that is
+ * not a vtkRenderStepsPass renders whole into attachment 0.
  */
-#ifndef VoxelGIGBuffer_h
-#define VoxelGIGBuffer_h
+#ifndef VoxelGIGBufferPass_h
+#define VoxelGIGBufferPass_h
 
-#include "vtkOpenGLFramebufferObject.h" // for vtkSmartPointer
-#include "vtkSmartPointer.h"
-#include "vtkTextureObject.h"             // for vtkSmartPointer
+#include "vtkNew.h"              // for vtkNew
+#include "vtkOpenGLRenderPass.h" // for the superclass
+#include "vtkSmartPointer.h"     // for vtkSmartPointer
+#include "vtkTextureObject.h"    // for vtkSmartPointer
 
 #include <string>
 
-class vtkAbstractMapper;
+class vtkCameraPass;
 class vtkOpenGLFramebufferObject;
-class vtkOpenGLRenderWindow;
-class vtkProp;
-class vtkTextureObject;
-class vtkWindow;
+class vtkRenderPassCollection;
+class vtkSequencePass;
 
 namespace voxelgi
 {
+struct Frame;
 
-class GBuffer
+class GBufferPass : public vtkOpenGLRenderPass
 {
 public:
-  /// Create or resize the textures and the framebuffer for a w x h viewport.
-  void Prepare(vtkOpenGLRenderWindow* renWin, int width, int height);
+  static GBufferPass* New();
+  vtkTypeMacro(GBufferPass, vtkOpenGLRenderPass);
+
+  /// Create or resize the textures and the framebuffer for the frame's viewport.
+  bool Prepare(const Frame& frame, std::string& error);
+  /// Render the frame's opaque geometry into the G-buffer.
+  void Run(const Frame& frame);
+  /// Render the state's props through the delegate's opaque steps (Run sets up the state).
+  void Render(const vtkRenderState* s) override;
+  void ReleaseGraphicsResources(vtkWindow* window) override;
+
+  vtkTextureObject* GetColor() const { return this->Color; }
+  vtkTextureObject* GetNormal() const { return this->Normal; }
+  vtkTextureObject* GetMaterial() const { return this->Material; }
+  vtkTextureObject* GetDepth() const { return this->Depth; }
+
+  // Shader injection into the mappers (see vtkOpenGLRenderPass).
+  bool PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
+    vtkOpenGLVertexArrayObject* VAO = nullptr) override;
+  vtkMTimeType GetShaderStageMTime() override { return this->ShaderStageTime.GetMTime(); }
+
+protected:
+  GBufferPass();
+  ~GBufferPass() override;
+
+private:
+  GBufferPass(const GBufferPass&) = delete;
+  void operator=(const GBufferPass&) = delete;
+
   /// Bind the framebuffer with all attachments (saving the current bindings) / restore.
   void Begin();
   void End();
+  static void DisableDataBlending();
 
-  /// Shader injection (see vtkOpenGLRenderPass); `litScene`: the renderer has lights.
-  static void PostReplaceShaders(std::string& fragment, vtkProp* prop, bool litScene);
-  /// Polydata mappers write all attachments, other mappers only the colour.
-  void SetShaderParameters(vtkAbstractMapper* mapper);
-
-  vtkOpenGLFramebufferObject* GetFramebuffer() const { return this->Framebuffer; }
+  vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
   vtkSmartPointer<vtkTextureObject> Color;
   vtkSmartPointer<vtkTextureObject> Normal;
   vtkSmartPointer<vtkTextureObject> Material;
   vtkSmartPointer<vtkTextureObject> Depth;
-
-  void ReleaseGraphicsResources(vtkWindow* window);
-
-private:
-  static void DisableDataBlending();
-
-  vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
   bool BlendWasEnabled[2] = { false, false };
+  bool LitScene = true;
+  vtkRenderPass* Opaque = nullptr; // what Render() runs this frame
+  // Camera + lights + opaque steps of a vtkRenderStepsPass delegate.
+  vtkNew<vtkCameraPass> OpaqueCamera;
+  vtkNew<vtkSequencePass> OpaqueSequence;
+  vtkNew<vtkRenderPassCollection> OpaquePasses;
+  vtkTimeStamp ShaderStageTime;
 };
 
 }

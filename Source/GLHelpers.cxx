@@ -1,12 +1,20 @@
 #include "GLHelpers.h"
 
+#include "VoxelGIShaders.h"
+
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderUtilities.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
 #include "vtkTextureUnitManager.h"
 #include "vtk_glew.h"
 
 #include <algorithm>
+#include <cassert>
+#include <regex>
 #include <cstring>
 #include <vector>
 
@@ -16,7 +24,8 @@ namespace voxelgi
 //------------------------------------------------------------------------------
 ComputeProgram::~ComputeProgram()
 {
-  this->Release();
+  // The owner releases GL objects with their context current (ReleaseGraphicsResources).
+  assert(!this->IsAllocated());
 }
 
 bool ComputeProgram::Build(const std::string& defines, const char* source, std::string& log)
@@ -39,6 +48,7 @@ bool ComputeProgram::Build(const std::string& defines, const char* source, std::
     GLint length = 0;
     glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
     readLog(length, [shader](GLsizei n, char* t) { glGetShaderInfoLog(shader, n, nullptr, t); });
+    log = NameShaderFiles(log);
     glDeleteShader(shader);
     return false;
   }
@@ -57,6 +67,17 @@ bool ComputeProgram::Build(const std::string& defines, const char* source, std::
   }
   this->Handle = program;
   return true;
+}
+
+bool ComputeProgram::BuildOnce(const char* source, const char* what, std::string& error)
+{
+  std::string log;
+  if (this->IsReady() || this->Build("", source, log))
+  {
+    return true;
+  }
+  error = std::string(what) + " shader failed to build: " + log;
+  return false;
 }
 
 void ComputeProgram::Use(vtkOpenGLRenderWindow* renWin)
@@ -85,24 +106,32 @@ void ComputeProgram::SetIntArray(const char* name, int count, const int* values)
   glUniform1iv(glGetUniformLocation(this->Handle, name), count, values);
 }
 
+void ComputeProgram::SetVec2(const char* name, float x, float y)
+{
+  glUniform2f(glGetUniformLocation(this->Handle, name), x, y);
+}
+
+void ComputeProgram::SetMat3(const char* name, const float* values)
+{
+  glUniformMatrix3fv(glGetUniformLocation(this->Handle, name), 1, GL_FALSE, values);
+}
+
 void ComputeProgram::SetMat4Array(const char* name, int count, const float* values)
 {
   glUniformMatrix4fv(glGetUniformLocation(this->Handle, name), count, GL_FALSE, values);
-}
-
-void ComputeProgram::BindUniformBlock(const char* block, unsigned int index)
-{
-  const GLuint blockIndex = glGetUniformBlockIndex(this->Handle, block);
-  if (blockIndex != GL_INVALID_INDEX)
-  {
-    glUniformBlockBinding(this->Handle, blockIndex, index);
-  }
 }
 
 void ComputeProgram::DispatchCube(int n, int localSize)
 {
   const GLuint groups = static_cast<GLuint>((n + localSize - 1) / localSize);
   glDispatchCompute(groups, groups, groups);
+  glUseProgram(0);
+}
+
+void ComputeProgram::DispatchImage(int width, int height, int tile)
+{
+  glDispatchCompute(static_cast<GLuint>((width + tile - 1) / tile),
+    static_cast<GLuint>((height + tile - 1) / tile), 1);
   glUseProgram(0);
 }
 
@@ -140,7 +169,8 @@ std::size_t BytesPerTexel(GLenum internalFormat)
 
 Volume3D::~Volume3D()
 {
-  this->Release();
+  // The owner releases GL objects with their context current (ReleaseGraphicsResources).
+  assert(!this->IsAllocated());
 }
 
 bool Volume3D::Allocate(unsigned int internalFormat, int resolution, int levels)
@@ -262,7 +292,8 @@ int SamplerBindings::Add(const ShadowMapArray& maps)
 //------------------------------------------------------------------------------
 StorageBuffer::~StorageBuffer()
 {
-  this->Release();
+  // The owner releases GL objects with their context current (ReleaseGraphicsResources).
+  assert(!this->IsAllocated());
 }
 
 bool StorageBuffer::Allocate(std::size_t bytes)
@@ -324,7 +355,8 @@ void StorageBuffer::Release()
 //------------------------------------------------------------------------------
 ShadowMapArray::~ShadowMapArray()
 {
-  this->Release();
+  // The owner releases GL objects with their context current (ReleaseGraphicsResources).
+  assert(!this->IsAllocated());
 }
 
 bool ShadowMapArray::Allocate(int size, int layers)
@@ -402,7 +434,8 @@ void ShadowMapArray::Release()
 //------------------------------------------------------------------------------
 EmptyFramebuffer::~EmptyFramebuffer()
 {
-  this->Release();
+  // The owner releases GL objects with their context current (ReleaseGraphicsResources).
+  assert(!this->IsAllocated());
 }
 
 unsigned int EmptyFramebuffer::Prepare(int width, int height)
@@ -438,7 +471,8 @@ void EmptyFramebuffer::Release()
 //------------------------------------------------------------------------------
 StageTimer::~StageTimer()
 {
-  this->Release();
+  // The owner releases GL objects with their context current (ReleaseGraphicsResources).
+  assert(!this->IsAllocated());
 }
 
 void StageTimer::Begin()
@@ -496,6 +530,64 @@ bool HasExtension(const char* name)
 }
 
 //------------------------------------------------------------------------------
+void BindImage2D(
+  unsigned int unit, vtkTextureObject* texture, unsigned int access, unsigned int format)
+{
+  glBindImageTexture(unit, texture->GetHandle(), 0, GL_FALSE, 0, access, format);
+}
+
+ScopedTextures::ScopedTextures(std::initializer_list<vtkTextureObject*> textures)
+{
+  for (vtkTextureObject* texture : textures)
+  {
+    if (texture && this->Count < 8)
+    {
+      texture->Activate();
+      this->Textures[this->Count++] = texture;
+    }
+  }
+}
+
+ScopedTextures::~ScopedTextures()
+{
+  while (this->Count > 0)
+  {
+    this->Textures[--this->Count]->Deactivate();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkShaderProgram* ReadyQuad(
+  std::unique_ptr<vtkOpenGLQuadHelper>& quad, vtkOpenGLRenderWindow* renWin, const char* fragment)
+{
+  if (!quad)
+  {
+    quad.reset(new vtkOpenGLQuadHelper(renWin,
+      vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), fragment, ""));
+  }
+  else
+  {
+    renWin->GetShaderCache()->ReadyShaderProgram(quad->Program);
+  }
+  return (quad->Program && quad->Program->GetCompiled()) ? quad->Program : nullptr;
+}
+
+vtkSmartPointer<vtkTextureObject> NewImageTexture(
+  vtkOpenGLRenderWindow* renWin, int internalFormat, int width, int height)
+{
+  auto texture = vtkSmartPointer<vtkTextureObject>::New();
+  texture->SetContext(renWin);
+  texture->SetInternalFormat(internalFormat);
+  texture->SetFormat(GL_RGBA);
+  texture->SetMinificationFilter(vtkTextureObject::Nearest);
+  texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+  texture->SetWrapS(vtkTextureObject::ClampToEdge);
+  texture->SetWrapT(vtkTextureObject::ClampToEdge);
+  texture->Allocate2D(width, height, 4, VTK_FLOAT);
+  return texture;
+}
+
+//------------------------------------------------------------------------------
 int ClearErrors()
 {
   int count = 0;
@@ -504,6 +596,23 @@ int ClearErrors()
     ++count;
   }
   return count;
+}
+
+std::string NameShaderFiles(const std::string& log)
+{
+  // Compilers start messages with "<file>:<line>" (Mesa) or "<file>(<line>)" (NVIDIA).
+  static const std::regex location(R"((^|\n)(\d+)([:(]\d+))");
+  std::string named;
+  auto begin = log.cbegin();
+  for (std::sregex_iterator it(log.begin(), log.end(), location), end; it != end; ++it)
+  {
+    const int file = std::stoi((*it)[2].str());
+    named.append(begin, (*it)[2].first);
+    named += file >= 0 && file < shaders::file_count ? shaders::file_names[file] : (*it)[2].str();
+    begin = (*it)[2].second;
+  }
+  named.append(begin, log.cend());
+  return named;
 }
 
 }

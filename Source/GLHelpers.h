@@ -5,14 +5,26 @@
  *
  * All functions expect the render window's context to be current. Raw program binds are
  * reported to VTK's shader cache so its notion of the bound program stays right.
+ *
+ * One release rule: a GL object is freed only by Release(), called from its stage's
+ * ReleaseGraphicsResources(vtkWindow*) with that window's context current. Destructors do
+ * not touch GL (whatever context is current then may not own the object); they check that
+ * the object was released.
  */
 #ifndef VoxelGIGLHelpers_h
 #define VoxelGIGLHelpers_h
 
+#include "vtkSmartPointer.h" // for vtkSmartPointer
+
 #include <cstddef>
+#include <initializer_list>
+#include <memory>
 #include <string>
 
+class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
+class vtkShaderProgram;
+class vtkTextureObject;
 
 namespace voxelgi
 {
@@ -28,7 +40,11 @@ public:
 
   /// Compile and link `defines` + `source`; on failure returns false and fills `log`.
   bool Build(const std::string& defines, const char* source, std::string& log);
+  /// Build `source` unless the program is ready; on failure `error` says that the `what`
+  /// shader failed, with the compiler's log.
+  bool BuildOnce(const char* source, const char* what, std::string& error);
   bool IsReady() const { return this->Handle != 0; }
+  bool IsAllocated() const { return this->Handle != 0; }
 
   /// Bind the program (after telling VTK's shader cache to forget its current program).
   void Use(vtkOpenGLRenderWindow* renWin);
@@ -36,12 +52,15 @@ public:
   void SetFloat(const char* name, float value);
   void SetVec3Array(const char* name, int count, const float* values);
   void SetIntArray(const char* name, int count, const int* values);
+  void SetVec2(const char* name, float x, float y);
   /// Column-major 4x4 matrices.
   void SetMat4Array(const char* name, int count, const float* values);
-  /// Connect the program's uniform block `block` to uniform buffer binding `index`.
-  void BindUniformBlock(const char* block, unsigned int index);
+  /// A column-major 3x3 matrix.
+  void SetMat3(const char* name, const float* values);
   /// Dispatch enough groups of `localSize`^3 to cover `n`^3 invocations, then unbind.
   void DispatchCube(int n, int localSize);
+  /// Dispatch tiles of `tile` x `tile` to cover a `width` x `height` image, then unbind.
+  void DispatchImage(int width, int height, int tile);
   void Release();
 
 private:
@@ -151,6 +170,7 @@ public:
   int BindSampler(vtkOpenGLRenderWindow* renWin) const;
   int Size() const { return this->Resolution; }
   int Layers() const { return this->LayerCount; }
+  bool IsAllocated() const { return this->Texture != 0 || this->Framebuffer != 0; }
   std::size_t Bytes() const;
   void Release();
 
@@ -172,6 +192,7 @@ public:
 
   /// Create (or resize) and return the framebuffer name, to bind through vtkOpenGLState.
   unsigned int Prepare(int width, int height);
+  bool IsAllocated() const { return this->Handle != 0; }
   void Release();
 
 private:
@@ -194,6 +215,7 @@ public:
   void End();
   /// Milliseconds of the last Begin/End pair (waits for the GPU); 0 if none.
   double Milliseconds();
+  bool IsAllocated() const { return this->Queries[0] != 0; }
   void Release();
 
 private:
@@ -201,11 +223,42 @@ private:
   bool Pending = false;
 };
 
+/// Bind level 0 of a 2D texture to image unit `unit` as `format` (e.g. GL_RGBA16F).
+void BindImage2D(unsigned int unit, vtkTextureObject* texture, unsigned int access,
+  unsigned int format);
+
+/// Texture units for a dispatch's 2D inputs: activates each texture, deactivates them after.
+class ScopedTextures
+{
+public:
+  explicit ScopedTextures(std::initializer_list<vtkTextureObject*> textures);
+  ~ScopedTextures();
+  ScopedTextures(const ScopedTextures&) = delete;
+  ScopedTextures& operator=(const ScopedTextures&) = delete;
+
+private:
+  vtkTextureObject* Textures[8];
+  int Count = 0;
+};
+
+/// A full-screen pass of `fragment`: built on first use, made current afterwards. Null when
+/// it did not compile.
+vtkShaderProgram* ReadyQuad(
+  std::unique_ptr<vtkOpenGLQuadHelper>& quad, vtkOpenGLRenderWindow* renWin, const char* fragment);
+
+/// A 2D RGBA texture of `internalFormat` (float data), nearest filtered, for image results.
+vtkSmartPointer<vtkTextureObject> NewImageTexture(
+  vtkOpenGLRenderWindow* renWin, int internalFormat, int width, int height);
+
 /// Whether the current context lists `name` among its extensions.
 bool HasExtension(const char* name);
 
 /// Drain the GL error queue; returns the number of errors that were pending.
 int ClearErrors();
+
+/// A GLSL compiler log with the file numbers of the embedded shaders' `#line` directives
+/// replaced by the files' names.
+std::string NameShaderFiles(const std::string& log);
 
 }
 

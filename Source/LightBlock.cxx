@@ -1,4 +1,4 @@
-#include "VoxelLights.h"
+#include "LightBlock.h"
 
 #include "VoxelGrid.h"
 
@@ -13,8 +13,15 @@
 namespace voxelgi
 {
 
-bool VoxelLights::Gather(vtkRenderer* renderer, const VoxelGrid& grid, int& dropped, int& invalid)
+bool LightBlock::Gather(vtkRenderer* renderer, const VoxelGrid& grid, int& dropped, int& invalid)
 {
+  // VTK creates its automatic headlight and places headlights and camera lights while
+  // rendering; do both before reading the lights, or the first frame would see none.
+  if (renderer->GetAutomaticLightCreation() && renderer->GetLights()->GetNumberOfItems() == 0)
+  {
+    renderer->CreateLight();
+  }
+  renderer->UpdateLightsGeometryToFollowCamera();
   Block block{};
   int count = 0;
   dropped = 0;
@@ -71,15 +78,13 @@ bool VoxelLights::Gather(vtkRenderer* renderer, const VoxelGrid& grid, int& drop
   }
   block.Info[0] = count;
   block.Info[1] = renderer->GetTwoSidedLighting() ? 1 : 0;
-  block.Grid[0] = static_cast<float>(grid.VoxelSize);
-  block.Grid[1] = static_cast<float>(grid.Resolution);
   const bool changed = !this->HaveUploaded || std::memcmp(&block, &this->Uploaded, sizeof(Block)) != 0;
   this->Data = block;
   this->Count = count;
   return changed;
 }
 
-void VoxelLights::Bind()
+void LightBlock::Bind()
 {
   if (!this->Buffer.IsAllocated())
   {
@@ -92,10 +97,10 @@ void VoxelLights::Bind()
     this->Uploaded = this->Data;
     this->HaveUploaded = true;
   }
-  this->Buffer.BindUniform(Binding);
+  this->Buffer.BindUniform(VOXELGI_LIGHT_BLOCK_BINDING);
 }
 
-void VoxelLights::ReleaseGraphicsResources()
+void LightBlock::ReleaseGraphicsResources(vtkWindow*)
 {
   this->Buffer.Release();
   this->HaveUploaded = false;

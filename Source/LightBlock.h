@@ -1,40 +1,42 @@
 /**
  * The renderer's switched-on lights in voxel grid coordinates, in the std140 layout of the
- * `VoxelLightBlock` uniform block (Shaders/lights.glsl), uploaded once per frame and shared by
- * the voxel lighting and the per-pixel composite.
+ * `VoxelLightBlock` uniform block (Shaders/lights.glsl), uploaded when they change and bound at
+ * VOXELGI_LIGHT_BLOCK_BINDING for LightVoxels, VoxelBounce and ConeTrace.
  */
-#ifndef VoxelGIVoxelLights_h
-#define VoxelGIVoxelLights_h
+#ifndef VoxelGILightBlock_h
+#define VoxelGILightBlock_h
 
 #include "GLHelpers.h"
+#include "shader_interface.h"
 
 #include <array>
 #include <vector>
 
 class vtkLight;
 class vtkRenderer;
+class vtkWindow;
 
 namespace voxelgi
 {
 struct VoxelGrid;
 
-class VoxelLights
+class LightBlock
 {
 public:
-  static constexpr int MaxLights = 16;
-  static constexpr unsigned int Binding = 0; // uniform buffer binding point
+  static constexpr int MaxLights = VOXELGI_MAX_LIGHTS;
 
-  /// Gather the lights (call after the renderer updated camera-following lights). Returns
+  /// Gather the lights (creating VTK's automatic headlight and placing camera-following
+  /// lights first, as VTK does while rendering). Returns
   /// true when they differ from the last gathered set. Lights beyond MaxLights are dropped
   /// (counted in `dropped`), so are lights with a negative or non-finite intensity or colour
   /// (counted in `invalid`).
   bool Gather(vtkRenderer* renderer, const VoxelGrid& grid, int& dropped, int& invalid);
-  /// Upload and bind to Binding.
+  /// Upload (when changed) and bind.
   void Bind();
   int GetCount() const { return this->Count; }
   /// The gathered lights, in block order.
   const std::vector<vtkLight*>& GetLights() const { return this->Used; }
-  void ReleaseGraphicsResources();
+  void ReleaseGraphicsResources(vtkWindow* window);
 
 private:
   struct Light
@@ -48,7 +50,6 @@ private:
   {
     Light Lights[MaxLights];
     int Info[4];
-    float Grid[4];
   };
   Block Data{};
   Block Uploaded{};

@@ -1,6 +1,11 @@
 #include "ShadowMaps.h"
 
+#include "Frame.h"
+#include "LightBlock.h"
 #include "VoxelGrid.h"
+#include "vtkVoxelGIPass.h"
+
+#include "vtkActor.h"
 
 #include "vtkCamera.h"
 #include "vtkLight.h"
@@ -69,34 +74,42 @@ void AimLightCamera(vtkCamera* camera, vtkLight* light, const VoxelGrid& grid)
 }
 }
 
-bool ShadowMaps::Render(vtkRenderer* renderer, const std::vector<vtkLight*>& lights,
-  const std::vector<vtkProp*>& casters, const VoxelGrid& grid, int size, std::string& error)
+bool ShadowMaps::Prepare(const Frame& frame, const LightBlock& lights, std::string& error)
 {
+  const std::vector<vtkLight*>& used = lights.GetLights();
   int count = 0;
-  for (std::size_t l = 0; l < lights.size() && l < MaxLights; ++l)
+  for (std::size_t l = 0; l < MaxLights; ++l)
   {
-    vtkLight* light = lights[l];
-    const bool shadowed = !light->LightTypeIsHeadlight() &&
+    vtkLight* light = l < used.size() ? used[l] : nullptr;
+    const bool shadowed = light && !light->LightTypeIsHeadlight() &&
       (!light->GetPositional() || light->GetConeAngle() < 90.0);
     this->Layers[l] = shadowed ? count++ : -1;
-  }
-  for (std::size_t l = lights.size(); l < MaxLights; ++l)
-  {
-    this->Layers[l] = -1;
   }
   if (count == 0)
   {
     this->Maps.Release();
     return true;
   }
-  if (!this->Maps.Allocate(size, count))
+  if (!this->Maps.Allocate(frame.Config.ShadowMapResolution, count))
   {
     error = "could not allocate the shadow maps";
     return false;
   }
+  return true;
+}
 
-  auto* renWin = static_cast<vtkOpenGLRenderWindow*>(renderer->GetRenderWindow());
-  vtkOpenGLState* ostate = renWin->GetState();
+void ShadowMaps::Run(const Frame& frame, const LightBlock& lights)
+{
+  if (!this->HasMaps())
+  {
+    return;
+  }
+  ScopedStage stage(*frame.Clock, vtkVoxelGIPass::STAGE_SHADOW_MAPS);
+  vtkRenderer* renderer = frame.Renderer;
+  const VoxelGrid& grid = frame.Grid;
+  const int size = this->Maps.Size();
+  const std::vector<vtkLight*>& used = lights.GetLights();
+  vtkOpenGLState* ostate = frame.Window->GetState();
   vtkNew<vtkCamera> camera;
   vtkCamera* userCamera = renderer->GetActiveCamera();
   userCamera->Register(nullptr);
@@ -114,19 +127,22 @@ bool ShadowMaps::Render(vtkRenderer* renderer, const std::vector<vtkLight*>& lig
     ostate->vtkglEnable(GL_DEPTH_TEST);
     ostate->vtkglDepthFunc(GL_LEQUAL);
     ostate->vtkglDepthMask(GL_TRUE);
-    for (std::size_t l = 0; l < lights.size() && l < MaxLights; ++l)
+    for (std::size_t l = 0; l < used.size() && l < MaxLights; ++l)
     {
       if (this->Layers[l] < 0)
       {
         continue;
       }
-      AimLightCamera(camera, lights[l], grid);
+      AimLightCamera(camera, used[l], grid);
       ostate->vtkglBindFramebuffer(GL_FRAMEBUFFER, this->Maps.PrepareLayer(this->Layers[l]));
       ostate->vtkglClearDepth(1.0);
       ostate->vtkglClear(GL_DEPTH_BUFFER_BIT);
-      for (vtkProp* prop : casters)
+      for (const ActorRecord& record : *frame.Actors)
       {
-        prop->RenderOpaqueGeometry(renderer);
+        if (record.Actor)
+        {
+          record.Actor->RenderOpaqueGeometry(renderer);
+        }
       }
       // clip <- world <- grid, composed in double
       vtkNew<vtkMatrix4x4> clipFromWorld;
@@ -151,7 +167,6 @@ bool ShadowMaps::Render(vtkRenderer* renderer, const std::vector<vtkLight*>& lig
   ostate->PopFramebufferBindings();
   renderer->SetActiveCamera(userCamera);
   userCamera->UnRegister(nullptr);
-  return true;
 }
 
 }

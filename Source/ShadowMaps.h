@@ -8,34 +8,38 @@
 #define VoxelGIShadowMaps_h
 
 #include "GLHelpers.h"
+#include "shader_interface.h"
 
 #include <string>
 #include <vector>
 
 class vtkLight;
-class vtkProp;
-class vtkRenderer;
+class vtkWindow;
 
 namespace voxelgi
 {
-struct VoxelGrid;
+struct Frame;
+class LightBlock;
 
 class ShadowMaps
 {
 public:
-  static constexpr int MaxLights = 16;
+  static constexpr int MaxLights = VOXELGI_MAX_LIGHTS;
 
-  /// Render the maps for `lights` (block order) with `casters`. Returns false with a
-  /// message when the maps cannot be allocated.
-  bool Render(vtkRenderer* renderer, const std::vector<vtkLight*>& lights,
-    const std::vector<vtkProp*>& casters, const VoxelGrid& grid, int size, std::string& error);
+  /// Choose the lights that get a map (block order) and allocate the maps at the frame's
+  /// ShadowMapResolution. Returns false with a message when they cannot be allocated.
+  bool Prepare(const Frame& frame, const LightBlock& lights, std::string& error);
+  /// Render the maps with the frame's voxelized actors as casters.
+  void Run(const Frame& frame, const LightBlock& lights);
+  /// Whether any light has a map.
+  bool HasMaps() const { return this->Maps.Layers() > 0; }
 
   /// Per light: layer of its map (-1: none) and column-major grid -> clip matrix.
   const int* GetLayers() const { return this->Layers; }
   const float* GetMatrices() const { return this->Matrices; }
 
   ShadowMapArray Maps;
-  void ReleaseGraphicsResources() { this->Maps.Release(); }
+  void ReleaseGraphicsResources(vtkWindow*) { this->Maps.Release(); }
 
 private:
   int Layers[MaxLights];

@@ -1,6 +1,10 @@
 #include "VoxelMipmap.h"
 
+#include "Frame.h"
+#include "LightVoxels.h"
 #include "VoxelGIShaders.h"
+#include "shader_interface.h"
+#include "vtkVoxelGIPass.h"
 
 #include "vtk_glew.h"
 
@@ -11,7 +15,6 @@ namespace voxelgi
 
 namespace
 {
-constexpr int LocalSize = 4;
 const char* const SourceNames[6] = { "voxelPosX", "voxelNegX", "voxelPosY", "voxelNegY",
   "voxelPosZ", "voxelNegZ" };
 }
@@ -26,8 +29,10 @@ int MipLevels(int resolution)
   return levels;
 }
 
-bool VoxelMipmap::Prepare(int resolution, bool anisotropic, std::string& error)
+bool VoxelMipmap::Prepare(const Frame& frame, std::string& error)
 {
+  const int resolution = frame.Grid.Resolution;
+  const bool anisotropic = frame.Config.AnisotropicMipmaps;
   this->Anisotropic = anisotropic;
   if (!anisotropic)
   {
@@ -46,20 +51,18 @@ bool VoxelMipmap::Prepare(int resolution, bool anisotropic, std::string& error)
       return false;
     }
   }
-  if (!this->Program.IsReady())
-  {
-    std::string log;
-    if (!this->Program.Build("", shaders::aniso_mipmap_comp, log))
-    {
-      error = "anisotropic mipmap shader failed to build: " + log;
-      return false;
-    }
-  }
-  return true;
+  return this->Program.BuildOnce(shaders::voxel_mipmap_comp, "anisotropic mipmap", error);
 }
 
-void VoxelMipmap::Build(vtkOpenGLRenderWindow* renWin, Volume3D& radiance)
+void VoxelMipmap::Run(const Frame& frame)
 {
+  ScopedStage stage(*frame.Clock, vtkVoxelGIPass::STAGE_MIPMAP);
+  this->Build(frame.Window);
+}
+
+void VoxelMipmap::Build(vtkOpenGLRenderWindow* renWin)
+{
+  Volume3D& radiance = this->Lighting.GetRadiance();
   if (!this->Anisotropic)
   {
     radiance.GenerateMipmaps();
@@ -90,7 +93,7 @@ void VoxelMipmap::Build(vtkOpenGLRenderWindow* renWin, Volume3D& radiance)
     this->Program.SetInt("sourceIsRadiance", level == 0 ? 1 : 0);
     this->Program.SetInt("sourceLevel", level - 1);
     this->Program.SetInt("targetSize", size);
-    this->Program.DispatchCube(size, LocalSize);
+    this->Program.DispatchCube(size, VOXELGI_LOCAL_SIZE);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   }
 }
@@ -105,7 +108,7 @@ std::size_t VoxelMipmap::MemoryBytes() const
   return bytes;
 }
 
-void VoxelMipmap::ReleaseGraphicsResources()
+void VoxelMipmap::ReleaseGraphicsResources(vtkWindow*)
 {
   for (auto& volume : this->Directional)
   {

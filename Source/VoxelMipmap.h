@@ -1,5 +1,5 @@
 /**
- * Mipmap stage: the radiance volume's levels of detail for cone tracing. Anisotropic: six
+ * Mipmap stage (voxel_mipmap.comp): the radiance volume's levels of detail for cone tracing. Anisotropic: six
  * directional volumes at half resolution with full mip chains, built level by level by a
  * compute shader (front-to-back integration per direction, then average). Isotropic: the
  * radiance volume's own mip chain, box filtered.
@@ -13,25 +13,36 @@
 #include <string>
 
 class vtkOpenGLRenderWindow;
+class vtkWindow;
 
 namespace voxelgi
 {
+struct Frame;
+class LightVoxels;
 
 class VoxelMipmap
 {
 public:
-  /// Allocate the directional volumes for a radiance volume of `resolution` (anisotropic).
-  bool Prepare(int resolution, bool anisotropic, std::string& error);
-  /// Rebuild all levels from `radiance`.
-  void Build(vtkOpenGLRenderWindow* renWin, Volume3D& radiance);
+  explicit VoxelMipmap(LightVoxels& lighting)
+    : Lighting(lighting)
+  {
+  }
+
+  /// Allocate the directional volumes for the frame's grid (anisotropic mipmaps only).
+  bool Prepare(const Frame& frame, std::string& error);
+  /// Rebuild all levels from the radiance volume.
+  void Run(const Frame& frame);
+  /// Run() without timing it (inside the bounces).
+  void Build(vtkOpenGLRenderWindow* renWin);
   bool IsAnisotropic() const { return this->Anisotropic; }
 
   /// Directions a cone travels: +x, -x, +y, -y, +z, -z.
   std::array<Volume3D, 6> Directional;
   std::size_t MemoryBytes() const;
-  void ReleaseGraphicsResources();
+  void ReleaseGraphicsResources(vtkWindow* window);
 
 private:
+  LightVoxels& Lighting;
   bool Anisotropic = true;
   ComputeProgram Program;
 };

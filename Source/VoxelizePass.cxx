@@ -1,8 +1,17 @@
-#include "Voxelizer.h"
+#include "VoxelizePass.h"
 
+#include "Frame.h"
 #include "VoxelGIShaders.h"
+#include "vtkVoxelGIPass.h"
 
+#include "vtkCamera.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
+#include "vtkProp.h"
+#include "vtkRenderState.h"
+#include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtk_glew.h"
 
@@ -12,14 +21,13 @@
 namespace voxelgi
 {
 
+vtkStandardNewMacro(VoxelizePass);
+
 namespace
 {
-constexpr int LocalSize = 4;
-constexpr unsigned int FlagUnit = 0;
-
 int Channels(bool emission)
 {
-  return Voxelizer::BaseChannels + (emission ? Voxelizer::EmissionChannels : 0);
+  return VOXELGI_BASE_CHANNELS + (emission ? VOXELGI_EMISSION_CHANNELS : 0);
 }
 
 std::size_t Cube(int resolution)
@@ -27,22 +35,39 @@ std::size_t Cube(int resolution)
   const std::size_t n = static_cast<std::size_t>(resolution);
   return n * n * n;
 }
+
+void Barrier()
+{
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
+    GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+}
 }
 
-std::size_t Voxelizer::RequiredBytes(int resolution, bool emission)
+VoxelizePass::VoxelizePass() = default;
+VoxelizePass::~VoxelizePass() = default;
+
+std::size_t VoxelizePass::RequiredBytes(int resolution, bool emission)
 {
   // accumulators (4 B per channel) + flag (1 B) + albedo, normal (4 B) [+ emission (8 B)]
   const std::size_t perVoxel = 4 * Channels(emission) + 1 + 4 + 4 + (emission ? 8 : 0);
   return Cube(resolution) * perVoxel;
 }
 
-std::string Voxelizer::Defines() const
+std::string VoxelizePass::Defines() const
 {
   return "#define VOXEL_CHANNELS " + std::to_string(Channels(this->Emission)) + "\n";
 }
 
-bool Voxelizer::Prepare(int resolution, bool emission, std::string& error)
+//------------------------------------------------------------------------------
+bool VoxelizePass::Prepare(const Frame& frame, std::string& error)
 {
+  const int resolution = frame.Voxels.Grid.Resolution;
+  const bool emission = frame.Voxels.Emission;
+  this->HardwareConservative = frame.Config.HardwareConservativeRaster;
+  if (resolution == this->Resolution && emission == this->Emission && this->ClearProgram.IsReady())
+  {
+    return true;
+  }
   const std::size_t channelBytes = Cube(resolution) * 4;
   GLint64 maxBlock = 0;
   glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
@@ -63,7 +88,7 @@ bool Voxelizer::Prepare(int resolution, bool emission, std::string& error)
   {
     ok = ok && this->Accumulators[c].Allocate(channelBytes);
   }
-  for (int c = Channels(emission); c < BaseChannels + EmissionChannels; ++c)
+  for (int c = Channels(emission); c < VOXELGI_BASE_CHANNELS + VOXELGI_EMISSION_CHANNELS; ++c)
   {
     this->Accumulators[c].Release();
   }
@@ -84,7 +109,7 @@ bool Voxelizer::Prepare(int resolution, bool emission, std::string& error)
     msg << "could not allocate the voxel volumes for resolution " << resolution << " ("
         << RequiredBytes(resolution, emission) / (1024 * 1024) << " MiB of GPU memory)";
     error = msg.str();
-    this->ReleaseGraphicsResources();
+    this->ReleaseGraphicsResources(frame.Window);
     return false;
   }
   if (variantChanged)
@@ -94,40 +119,143 @@ bool Voxelizer::Prepare(int resolution, bool emission, std::string& error)
       !this->ResolveProgram.Build(this->Defines(), shaders::voxel_resolve_comp, log))
     {
       error = "voxel compute shaders failed to build: " + log;
-      this->ReleaseGraphicsResources();
+      this->ReleaseGraphicsResources(frame.Window);
       return false;
     }
+    this->ShaderStageTime.Modified(); // the mapper shaders depend on the emission variant
   }
   return true;
 }
 
-void Voxelizer::BindForRendering() const
+//------------------------------------------------------------------------------
+void VoxelizePass::Run(const Frame& frame)
+{
+  const bool full = frame.Voxels.Full;
+  this->EmissionScale = frame.Voxels.EmissionScale;
+  this->Clear(frame);
+
+  std::vector<vtkProp*> staticProps;
+  std::vector<vtkProp*> dynamicProps;
+  this->PropEmissions.clear();
+  for (const ActorRecord& record : *frame.Actors)
+  {
+    (record.Dynamic ? dynamicProps : staticProps).push_back(record.Actor);
+    this->PropEmissions[record.Actor] = record.Emission;
+  }
+  this->AimCamera(frame);
+
+  vtkRenderer* renderer = frame.Renderer;
+  vtkOpenGLState* ostate = frame.Window->GetState();
+  vtkCamera* userCamera = renderer->GetActiveCamera();
+  userCamera->Register(this);
+  renderer->SetActiveCamera(this->Camera);
+  ostate->PushFramebufferBindings();
+  ostate->vtkglBindFramebuffer(
+    GL_FRAMEBUFFER, this->Framebuffer.Prepare(this->Resolution, this->Resolution));
+  {
+    vtkOpenGLState::ScopedglViewport viewport(ostate);
+    vtkOpenGLState::ScopedglEnableDisable scissor(ostate, GL_SCISSOR_TEST);
+    vtkOpenGLState::ScopedglEnableDisable depth(ostate, GL_DEPTH_TEST);
+    vtkOpenGLState::ScopedglEnableDisable blend(ostate, GL_BLEND);
+    vtkOpenGLState::ScopedglEnableDisable cull(ostate, GL_CULL_FACE);
+    ostate->vtkglViewport(0, 0, this->Resolution, this->Resolution);
+    ostate->vtkglDisable(GL_SCISSOR_TEST);
+    ostate->vtkglDisable(GL_DEPTH_TEST);
+    ostate->vtkglDisable(GL_BLEND);
+    // Depth is computed in the shader; clamping keeps the rasterizer from clipping it.
+    glEnable(GL_DEPTH_CLAMP);
+    if (this->HardwareConservative)
+    {
+      glEnable(GL_CONSERVATIVE_RASTERIZATION_NV);
+    }
+    if (full)
+    {
+      this->Draw(frame, staticProps, true);
+    }
+    if (!dynamicProps.empty())
+    {
+      this->Draw(frame, dynamicProps, false);
+    }
+    glDisable(GL_DEPTH_CLAMP);
+    if (this->HardwareConservative)
+    {
+      glDisable(GL_CONSERVATIVE_RASTERIZATION_NV);
+    }
+  }
+  ostate->PopFramebufferBindings();
+  renderer->SetActiveCamera(userCamera);
+  userCamera->UnRegister(this);
+
+  // Line and point primitives of mixed polydata cannot feed the triangle geometry shader;
+  // GL rejects those draws (they have no area to voxelize). Do not leave the errors to VTK.
+  ClearErrors();
+  this->Resolve(frame);
+}
+
+void VoxelizePass::AimCamera(const Frame& frame)
+{
+  // An orthographic camera whose view volume is the grid cube: VTK's mappers then compose
+  // model, shift-scale and grid matrices in double precision for us.
+  const glm::dvec3 center = frame.Grid.Center();
+  const double half = 0.5 * frame.Grid.Size();
+  this->Camera->SetFocalPoint(center.x, center.y, center.z);
+  this->Camera->SetPosition(center.x, center.y, center.z + half);
+  this->Camera->SetViewUp(0.0, 1.0, 0.0);
+  vtkNew<vtkMatrix4x4> projection;
+  projection->SetElement(0, 0, 1.0 / half);
+  projection->SetElement(1, 1, 1.0 / half);
+  projection->SetElement(2, 2, 1.0 / half);
+  projection->SetElement(2, 3, 1.0);
+  this->Camera->SetExplicitProjectionTransformMatrix(projection);
+  this->Camera->SetUseExplicitProjectionTransformMatrix(true);
+}
+
+void VoxelizePass::Draw(const Frame& frame, std::vector<vtkProp*>& props, bool staticPass)
+{
+  ScopedStage stage(*frame.Clock,
+    staticPass ? vtkVoxelGIPass::STAGE_VOXELIZE_STATIC : vtkVoxelGIPass::STAGE_VOXELIZE_DYNAMIC);
+  this->StaticPass = staticPass;
+  vtkRenderState state(frame.Renderer);
+  state.SetPropArrayAndCount(props.data(), static_cast<int>(props.size()));
+  this->Render(&state);
+  Barrier();
+}
+
+void VoxelizePass::Render(const vtkRenderState* s)
+{
+  this->NumberOfRenderedProps = 0;
+  this->PreRender(s);
+  this->BindAccumulators();
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    this->NumberOfRenderedProps += s->GetPropArray()[i]->RenderOpaqueGeometry(s->GetRenderer());
+  }
+  this->PostRender(s);
+}
+
+//------------------------------------------------------------------------------
+void VoxelizePass::BindAccumulators() const
 {
   for (int c = 0; c < Channels(this->Emission); ++c)
   {
     this->Accumulators[c].Bind(static_cast<unsigned int>(c));
   }
-  this->FlagVolume.BindImage(FlagUnit, GL_READ_WRITE);
+  this->FlagVolume.BindImage(VOXELGI_FLAG_IMAGE_UNIT, GL_READ_WRITE);
 }
 
-void Voxelizer::Barrier()
+void VoxelizePass::Clear(const Frame& frame)
 {
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
-    GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-}
-
-void Voxelizer::Clear(vtkOpenGLRenderWindow* renWin, bool all)
-{
-  this->BindForRendering();
-  this->ClearProgram.Use(renWin);
-  this->ClearProgram.SetInt("voxelResolution", this->Resolution);
-  this->ClearProgram.SetInt("clearStatic", all ? 1 : 0);
-  this->ClearProgram.DispatchCube(this->Resolution, LocalSize);
+  ScopedStage stage(*frame.Clock, vtkVoxelGIPass::STAGE_CLEAR);
+  this->BindAccumulators();
+  this->ClearProgram.Use(frame.Window);
+  this->ClearProgram.SetInt("clearStatic", frame.Voxels.Full ? 1 : 0);
+  this->ClearProgram.DispatchCube(this->Resolution, VOXELGI_LOCAL_SIZE);
   Barrier();
 }
 
-void Voxelizer::Resolve(vtkOpenGLRenderWindow* renWin, float emissionScale)
+void VoxelizePass::Resolve(const Frame& frame)
 {
+  ScopedStage stage(*frame.Clock, vtkVoxelGIPass::STAGE_RESOLVE);
   for (int c = 0; c < Channels(this->Emission); ++c)
   {
     this->Accumulators[c].Bind(static_cast<unsigned int>(c));
@@ -138,25 +266,28 @@ void Voxelizer::Resolve(vtkOpenGLRenderWindow* renWin, float emissionScale)
   {
     this->EmissionVolume.BindImage(3, GL_WRITE_ONLY);
   }
-  this->ResolveProgram.Use(renWin);
-  this->ResolveProgram.SetInt("voxelResolution", this->Resolution);
+  this->ResolveProgram.Use(frame.Window);
   if (this->Emission)
   {
-    this->ResolveProgram.SetFloat("emissionScale", emissionScale);
+    this->ResolveProgram.SetFloat("emissionScale", static_cast<float>(this->EmissionScale));
   }
-  this->ResolveProgram.DispatchCube(this->Resolution, LocalSize);
+  this->ResolveProgram.DispatchCube(this->Resolution, VOXELGI_LOCAL_SIZE);
   Barrier();
 }
 
-void Voxelizer::PreReplaceShaders(std::string& geometry, std::string& fragment)
+//------------------------------------------------------------------------------
+bool VoxelizePass::PreReplaceShaderValues(
+  std::string&, std::string& geometry, std::string& fragment, vtkAbstractMapper*, vtkProp*)
 {
   geometry = shaders::voxelize_geom;
   // The voxels store the colour VTK would shade with, before lighting; textures still apply.
   vtkShaderProgram::Substitute(
     fragment, "//VTK::Light::Impl", "gl_FragData[0] = vec4(diffuseColor, opacity);\n");
+  return true;
 }
 
-void Voxelizer::PostReplaceShaders(std::string& geometry, std::string& fragment) const
+bool VoxelizePass::PostReplaceShaderValues(
+  std::string&, std::string& geometry, std::string& fragment, vtkAbstractMapper*, vtkProp*)
 {
   // VTK passes varyings through a geometry shader as `nameGSOutput = nameVSOutput[i];`.
   // Blend the three inputs with the emitted vertex's barycentric weights instead, so the
@@ -177,21 +308,29 @@ void Voxelizer::PostReplaceShaders(std::string& geometry, std::string& fragment)
   {
     fragment.insert(end, "  voxelWrite(gl_FragData[0]);\n");
   }
+  return true;
 }
 
-void Voxelizer::SetShaderParameters(
-  vtkShaderProgram* program, bool staticPass, const double emission[3]) const
+bool VoxelizePass::SetShaderParameters(
+  vtkShaderProgram* program, vtkAbstractMapper*, vtkProp* prop, vtkOpenGLVertexArrayObject*)
 {
-  program->SetUniformi("voxelResolution", this->Resolution);
-  program->SetUniformi("voxelStaticPass", staticPass ? 1 : 0);
+  float e[3] = { 0.f, 0.f, 0.f };
+  auto found = this->PropEmissions.find(prop);
+  if (found != this->PropEmissions.end() && this->EmissionScale > 0.0)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      e[c] = static_cast<float>(found->second[c] / this->EmissionScale);
+    }
+  }
+  program->SetUniformi("voxelStaticPass", this->StaticPass ? 1 : 0);
   program->SetUniformi("voxelDilate", this->HardwareConservative ? 0 : 1);
-  program->SetUniformi("voxelFlag", static_cast<int>(FlagUnit));
-  const float e[3] = { static_cast<float>(emission[0]), static_cast<float>(emission[1]),
-    static_cast<float>(emission[2]) };
   program->SetUniform3f("voxelEmission", e);
+  return true;
 }
 
-std::size_t Voxelizer::MemoryBytes() const
+//------------------------------------------------------------------------------
+std::size_t VoxelizePass::MemoryBytes() const
 {
   std::size_t bytes = this->FlagVolume.Bytes() + this->AlbedoVolume.Bytes() +
     this->NormalVolume.Bytes() + this->EmissionVolume.Bytes();
@@ -202,31 +341,31 @@ std::size_t Voxelizer::MemoryBytes() const
   return bytes;
 }
 
-std::size_t Voxelizer::EmissionBytes() const
+std::size_t VoxelizePass::EmissionBytes() const
 {
   std::size_t bytes = this->EmissionVolume.Bytes();
-  for (int c = BaseChannels; c < BaseChannels + EmissionChannels; ++c)
+  for (int c = VOXELGI_BASE_CHANNELS; c < VOXELGI_BASE_CHANNELS + VOXELGI_EMISSION_CHANNELS; ++c)
   {
     bytes += this->Accumulators[c].Bytes();
   }
   return bytes;
 }
 
-void Voxelizer::ReadCounts(std::vector<unsigned int>& counts) const
+void VoxelizePass::ReadCounts(std::vector<unsigned int>& counts) const
 {
   counts.resize(Cube(this->Resolution));
   Barrier();
   this->Accumulators[0].Read(0, counts.size() * sizeof(unsigned int), counts.data());
 }
 
-void Voxelizer::ReadFlags(std::vector<unsigned char>& flags) const
+void VoxelizePass::ReadFlags(std::vector<unsigned char>& flags) const
 {
   flags.resize(Cube(this->Resolution));
   Barrier();
   this->FlagVolume.Read(GL_RED_INTEGER, GL_UNSIGNED_BYTE, flags.data());
 }
 
-void Voxelizer::ReleaseGraphicsResources()
+void VoxelizePass::ReleaseGraphicsResources(vtkWindow*)
 {
   for (auto& buffer : this->Accumulators)
   {
@@ -238,6 +377,7 @@ void Voxelizer::ReleaseGraphicsResources()
   this->EmissionVolume.Release();
   this->ClearProgram.Release();
   this->ResolveProgram.Release();
+  this->Framebuffer.Release();
   this->Resolution = 0;
 }
 

@@ -1,88 +1,110 @@
 /**
- * Voxelize stage: the voxel volumes and the GL work around rendering actors into them.
+ * Voxelize stage: the voxel volumes and the internal render pass that fills them.
  *
- * Actors are rendered by their own VTK mappers; vtkVoxelGIPass injects this stage's shader
- * code (ReplaceShaders*) so that every fragment adds its unlit colour, geometric normal and
- * emission to exact integer accumulators (one shader storage buffer per channel). A flag
- * volume marks voxels written by static actors: dynamic actors skip them, and ClearDynamic
- * clears everything else. Resolve turns the sums into the sampled volumes (albedo and normal
- * RGBA8, emission RGBA16F).
+ * Actors are rendered by their own VTK mappers, with this pass in their render-pass keys so
+ * that it injects its shader code (voxelize.geom, voxelize.frag): every fragment adds its
+ * unlit colour, geometric normal and emission to exact integer accumulators (one shader
+ * storage buffer per channel), seen through an orthographic camera fitted to the grid cube.
+ * A flag volume marks voxels written by static actors: dynamic actors skip them, and the
+ * clear (clear_dynamic.comp) keeps them. The resolve (voxel_resolve.comp) turns the sums into
+ * the sampled volumes: albedo and normal RGBA8, emission RGBA16F.
  */
-#ifndef VoxelGIVoxelizer_h
-#define VoxelGIVoxelizer_h
+#ifndef VoxelGIVoxelizePass_h
+#define VoxelGIVoxelizePass_h
 
 #include "GLHelpers.h"
-#include "VoxelGrid.h"
+#include "shader_interface.h"
+
+#include "vtkNew.h"              // for vtkNew
+#include "vtkOpenGLRenderPass.h" // for the superclass
 
 #include <array>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
-class vtkOpenGLRenderWindow;
-class vtkShaderProgram;
+class vtkCamera;
+class vtkProp;
 
 namespace voxelgi
 {
+struct Frame;
 
-class Voxelizer
+class VoxelizePass : public vtkOpenGLRenderPass
 {
 public:
-  /// Channels of the accumulators: count, albedo rgb, normal xyz [, emission rgb].
-  static constexpr int BaseChannels = 7;
-  static constexpr int EmissionChannels = 3;
+  static VoxelizePass* New();
+  vtkTypeMacro(VoxelizePass, vtkOpenGLRenderPass);
 
-  /**
-   * Allocate volumes and build programs for `resolution` (with or without emission).
-   * Returns false with a message (naming the memory it needed) when it cannot.
-   */
-  bool Prepare(int resolution, bool emission, std::string& error);
+  /// Allocate the volumes and build the programs for the frame's grid and emission. Returns
+  /// false with a message (naming the memory it needed) when it cannot.
+  bool Prepare(const Frame& frame, std::string& error);
+  /// Clear, render the frame's actors (the static ones only for a full update), resolve.
+  void Run(const Frame& frame);
+  /// Render the state's props into the accumulators (Run sets up camera and GL state).
+  void Render(const vtkRenderState* s) override;
+  void ReleaseGraphicsResources(vtkWindow* window) override;
+
   /// Bytes one resolution needs, for messages and for limits checks before allocating.
   static std::size_t RequiredBytes(int resolution, bool emission);
 
-  /// Clear accumulators: all of them (and the flags), or only the non-static voxels.
-  void Clear(vtkOpenGLRenderWindow* renWin, bool all);
-  /// Bind buffers and the flag image for rendering actors into the accumulators.
-  void BindForRendering() const;
-  /// Make accumulator writes visible (between the static and the dynamic actors, and after).
-  static void Barrier();
-  /// Sums -> sampled volumes. `emissionScale` undoes the per-scene emission normalization.
-  void Resolve(vtkOpenGLRenderWindow* renWin, float emissionScale);
-
-  /// Shader injection into VTK's polydata mapper shaders (see vtkOpenGLRenderPass).
-  static void PreReplaceShaders(std::string& geometry, std::string& fragment);
-  void PostReplaceShaders(std::string& geometry, std::string& fragment) const;
-  void SetShaderParameters(vtkShaderProgram* program, bool staticPass, const double emission[3]) const;
-
-  /// Use GL_NV_conservative_raster (when the context has it) instead of dilating triangles.
-  void SetHardwareConservative(bool on) { this->HardwareConservative = on; }
-  bool GetHardwareConservative() const { return this->HardwareConservative; }
-
   int GetResolution() const { return this->Resolution; }
   bool HasEmission() const { return this->Emission; }
+  bool GetHardwareConservative() const { return this->HardwareConservative; }
   std::size_t MemoryBytes() const;
   /// The part of MemoryBytes() that only emissive scenes need.
   std::size_t EmissionBytes() const;
 
-  /// Read back: counts (one uint per voxel), flags (one byte), or a volume's RGBA texels.
+  /// The sampled volumes (emission only in emissive scenes).
+  const Volume3D& GetAlbedo() const { return this->AlbedoVolume; }
+  const Volume3D& GetNormal() const { return this->NormalVolume; }
+  const Volume3D& GetEmission() const { return this->EmissionVolume; }
+  /// Read back: counts (one uint per voxel) and flags (one byte).
   void ReadCounts(std::vector<unsigned int>& counts) const;
   void ReadFlags(std::vector<unsigned char>& flags) const;
 
-  Volume3D AlbedoVolume;
-  Volume3D NormalVolume;
-  Volume3D EmissionVolume;
+  // Shader injection into the mappers (see vtkOpenGLRenderPass).
+  bool PreReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
+    vtkOpenGLVertexArrayObject* VAO = nullptr) override;
+  vtkMTimeType GetShaderStageMTime() override { return this->ShaderStageTime.GetMTime(); }
 
-  void ReleaseGraphicsResources();
+protected:
+  VoxelizePass();
+  ~VoxelizePass() override;
 
 private:
+  VoxelizePass(const VoxelizePass&) = delete;
+  void operator=(const VoxelizePass&) = delete;
+
   std::string Defines() const;
+  /// Aim the voxelization camera: its view volume is the grid cube.
+  void AimCamera(const Frame& frame);
+  /// Render `props` into the accumulators as static or dynamic actors.
+  void Draw(const Frame& frame, std::vector<vtkProp*>& props, bool staticPass);
+  void Clear(const Frame& frame);
+  void Resolve(const Frame& frame);
+  void BindAccumulators() const;
 
   int Resolution = 0;
   bool Emission = false;
   bool HardwareConservative = false;
-  std::array<StorageBuffer, BaseChannels + EmissionChannels> Accumulators;
+  bool StaticPass = false;
+  double EmissionScale = 0.0;
+  std::unordered_map<vtkProp*, std::array<double, 3>> PropEmissions;
+  std::array<StorageBuffer, VOXELGI_BASE_CHANNELS + VOXELGI_EMISSION_CHANNELS> Accumulators;
   Volume3D FlagVolume;
+  Volume3D AlbedoVolume;
+  Volume3D NormalVolume;
+  Volume3D EmissionVolume;
   ComputeProgram ClearProgram;
   ComputeProgram ResolveProgram;
+  EmptyFramebuffer Framebuffer;
+  vtkNew<vtkCamera> Camera;
+  vtkTimeStamp ShaderStageTime;
 };
 
 }

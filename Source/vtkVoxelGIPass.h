@@ -50,6 +50,7 @@ class vtkInformationIntegerKey;
 class vtkProp;
 class vtkRenderPass;
 class vtkRenderStepsPass;
+class vtkOpenGLRenderWindow;
 class vtkRenderWindow;
 
 class VTKRENDERINGVOXELGI_EXPORT vtkVoxelGIPass : public vtkOpenGLRenderPass
@@ -482,65 +483,62 @@ public:
    */
   bool GetVoxelVolume(int volume, vtkImageData* image);
 
-  // Shader injection into the mappers while voxelizing (see vtkOpenGLRenderPass).
-  bool PreReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
-    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
-  bool PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
-    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
-  bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
-    vtkOpenGLVertexArrayObject* VAO = nullptr) override;
-  vtkMTimeType GetShaderStageMTime() override;
-
 protected:
   vtkVoxelGIPass();
   ~vtkVoxelGIPass() override;
 
+  /// Release everything on the window the pass rendered to last, and follow `window`.
+  void WatchWindow(vtkOpenGLRenderWindow* window);
+  void WindowDeleted();
   /// Render VTK's own image.
   void RenderDelegate(const vtkRenderState* s);
-  /// Scan the scene and bring the voxel volumes up to date; false if GI cannot run.
-  /// `changed` tells whether any voxel was rewritten.
-  bool UpdateVoxels(const vtkRenderState* s, bool& changed);
-  /// Render the scanned actors into the accumulators (static ones only when `full`).
-  void VoxelizeActors(vtkRenderer* renderer, bool full);
-  /// Warn when an actor's input has NaN or Inf point coordinates.
-  void ReportNonFinitePoints(vtkActor* actor);
   /// OpenGL 4.3 available? Reports a missing capability once.
   bool CheckContext(vtkRenderWindow* renWin);
-  /// Light the voxels, build the mipmaps and bounce, when voxels, lights or settings changed.
-  bool UpdateRadiance(vtkRenderer* renderer, bool voxelsChanged, bool& changed);
-  /// G-buffer, cone tracing, composite and the remaining VTK steps. `reuse`: nothing
-  /// changed since the last traced frame, present it again.
-  void RenderGI(const vtkRenderState* s, bool reuse);
-  /// G-buffer and cone tracing + composite into the float images.
-  void TraceFrame(const vtkRenderState* s, vtkRenderStepsPass* steps, int width, int height);
+  /// The frame the stages see: renderer, window, viewport and a snapshot of the settings.
+  void BeginFrame(const vtkRenderState* s);
+  /// Scan the scene and bring the voxels up to date (Voxelize stage); false if GI cannot
+  /// run. `changed` tells whether any voxel was rewritten.
+  bool UpdateVoxels(bool& changed);
+  /// Gather the lights into the light block; true when they changed.
+  bool GatherLights();
+  /// When voxels, lights or settings changed: LightVoxels, Mipmap, Bounce.
+  bool UpdateRadiance(bool voxelsChanged, bool& changed);
+  bool LightAndBounce();
+  /// GBuffer, ConeTrace and Composite (unless `reuse`: nothing changed since the last traced
+  /// frame), then Present and VTK's remaining steps.
+  void RenderGI(bool reuse);
+  void TraceFrame();
+  /// A voxel debug view over VTK's image.
+  void RenderVoxelView();
 
   vtkRenderPass* DelegatePass = nullptr;
-  vtkTypeBool Enabled = 1;
-  int VoxelResolution = 128;
-  double GridPadding = 0.05;
-  int DebugView = DEBUG_VIEW_NONE;
-  vtkTypeBool AutoDynamic = 1;
-  vtkTypeBool HardwareConservativeRaster = 1;
-  int UpdatePolicy = UPDATE_ON_CHANGE;
-  int UpdateInterval = 10;
-  vtkTypeBool TimeStages = 0;
-  int LightOcclusion = LIGHT_OCCLUSION_VOXEL_SHADOWS;
-  int ShadowMapResolution = 1024;
-  int Bounces = 1;
-  vtkTypeBool AnisotropicMipmaps = 1;
-  int DiffuseConeCount = 6;
-  double DiffuseConeAperture = 60.0;
-  double ConeStepFactor = 0.75;
-  double MaxTraceDistance = 1.0;
-  double ConeStartOffset = 1.5;
-  double TraceResolution = 1.0;
-  double IndirectIntensity = 1.0;
-  vtkTypeBool SpecularCone = 1;
-  double SpecularIntensity = 1.0;
-  double AmbientOcclusionStrength = 0.5;
-  double AmbientOcclusionFalloff = 0.05;
-  vtkTypeBool ConeShadows = 1;
-  double ShadowConeAperture = 6.0;
+  // Settings: defaults (and ranges) from the settings table, Source/VoxelGISettings.json.
+  vtkTypeBool Enabled{};
+  int VoxelResolution{};
+  double GridPadding{};
+  int DebugView{};
+  vtkTypeBool AutoDynamic{};
+  vtkTypeBool HardwareConservativeRaster{};
+  int UpdatePolicy{};
+  int UpdateInterval{};
+  vtkTypeBool TimeStages{};
+  int LightOcclusion{};
+  int ShadowMapResolution{};
+  int Bounces{};
+  vtkTypeBool AnisotropicMipmaps{};
+  int DiffuseConeCount{};
+  double DiffuseConeAperture{};
+  double ConeStepFactor{};
+  double MaxTraceDistance{};
+  double ConeStartOffset{};
+  double TraceResolution{};
+  double IndirectIntensity{};
+  vtkTypeBool SpecularCone{};
+  double SpecularIntensity{};
+  double AmbientOcclusionStrength{};
+  double AmbientOcclusionFalloff{};
+  vtkTypeBool ConeShadows{};
+  double ShadowConeAperture{};
   bool GIActive = false;
 
 private:

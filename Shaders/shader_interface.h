@@ -1,0 +1,24 @@
+/* Constants and binding points shared by the C++ stages and the GLSL shaders. The stages
+   include this file; the shader embedder (EmbedShaders.cmake) puts it in front of every
+   embedded shader. Plain preprocessor definitions only, so that both languages read it. */
+#ifndef VOXELGI_SHADER_INTERFACE
+#define VOXELGI_SHADER_INTERFACE
+
+#define VOXELGI_MAX_LIGHTS 16 /* lights in the light block */
+#define VOXELGI_MAX_CONES 16  /* diffuse cone directions */
+#define VOXELGI_LOCAL_SIZE 4  /* work group edge of the per-voxel compute stages */
+#define VOXELGI_HALF_MAX 65504.0 /* largest finite half float: RGBA16F results stay below */
+
+/* Uniform buffer binding points. */
+#define VOXELGI_LIGHT_BLOCK_BINDING 0 /* lights.glsl */
+#define VOXELGI_GRID_BLOCK_BINDING 1  /* voxel_grid.glsl */
+
+/* Shader storage bindings 0, 1, ...: one per channel of the voxelization sums
+   (voxel_common.glsl), count, albedo rgb, normal xyz, then emission rgb when present. */
+#define VOXELGI_BASE_CHANNELS 7
+#define VOXELGI_EMISSION_CHANNELS 3
+
+/* Image units of the voxelization stage. */
+#define VOXELGI_FLAG_IMAGE_UNIT 0
+
+#endif

@@ -1,0 +1,102 @@
+#include "Composite.h"
+
+#include "ConeTrace.h"
+#include "Frame.h"
+#include "GBufferPass.h"
+#include "GridView.h"
+#include "VoxelGIShaders.h"
+#include "vtkVoxelGIPass.h"
+
+#include "vtkOpenGLRenderWindow.h"
+#include "vtk_glew.h"
+
+namespace voxelgi
+{
+
+Composite::Composite(const GBufferPass& gbuffer, const ConeTrace& trace)
+  : GBuffer(gbuffer)
+  , Trace(trace)
+{
+}
+
+Composite::~Composite() = default;
+
+bool Composite::Prepare(const Frame& frame, std::string& error)
+{
+  if (!this->Color)
+  {
+    this->Color = NewImageTexture(frame.Window, GL_RGBA32F, frame.Width, frame.Height);
+    this->Indirect = NewImageTexture(frame.Window, GL_RGBA32F, frame.Width, frame.Height);
+    this->Display = NewImageTexture(frame.Window, GL_RGBA8, frame.Width, frame.Height);
+  }
+  this->Color->Resize(frame.Width, frame.Height);
+  this->Indirect->Resize(frame.Width, frame.Height);
+  this->Display->Resize(frame.Width, frame.Height);
+  return this->Program.BuildOnce(shaders::composite_comp, "composite", error);
+}
+
+void Composite::Run(const Frame& frame)
+{
+  // Timed with the trace: it is the trace's upsampling.
+  ScopedStage stage(*frame.Clock, vtkVoxelGIPass::STAGE_CONE_TRACE);
+  vtkTextureObject* indirect = this->Trace.GetIndirect();
+  vtkTextureObject* shadowed = this->Trace.GetShadowed();
+  ComputeProgram& p = this->Program;
+  p.Use(frame.Window);
+  ScopedTextures inputs({ this->GBuffer.GetColor(), this->GBuffer.GetNormal(),
+    this->GBuffer.GetDepth(), indirect, shadowed });
+  float gridFromNDC[16];
+  GridFromNDC(frame.Renderer, frame.Grid, gridFromNDC);
+  p.SetMat4Array("voxelFromNDC", 1, gridFromNDC);
+  p.SetInt("gbufferColor", this->GBuffer.GetColor()->GetTextureUnit());
+  p.SetInt("gbufferNormal", this->GBuffer.GetNormal()->GetTextureUnit());
+  p.SetInt("gbufferDepth", this->GBuffer.GetDepth()->GetTextureUnit());
+  p.SetInt("traceIndirect", indirect->GetTextureUnit());
+  p.SetInt("traceShadowed", shadowed->GetTextureUnit());
+  p.SetVec2("traceSize", static_cast<float>(indirect->GetWidth()),
+    static_cast<float>(indirect->GetHeight()));
+  p.SetFloat("aoStrength", static_cast<float>(frame.Config.AmbientOcclusionStrength));
+  const int view = frame.Config.DebugView;
+  p.SetInt("compositeView",
+    view >= vtkVoxelGIPass::DEBUG_VIEW_DIRECT ? view - vtkVoxelGIPass::DEBUG_VIEW_DIRECT + 1 : 0);
+  BindImage2D(0, this->Color, GL_WRITE_ONLY, GL_RGBA32F);
+  BindImage2D(1, this->Indirect, GL_WRITE_ONLY, GL_RGBA32F);
+  BindImage2D(2, this->Display, GL_WRITE_ONLY, GL_RGBA8);
+  p.DispatchImage(frame.Width, frame.Height, 8);
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
+    GL_TEXTURE_UPDATE_BARRIER_BIT);
+}
+
+bool Composite::Read(
+  vtkOpenGLRenderWindow* renWin, int image, std::vector<float>& rgba, int& w, int& h)
+{
+  vtkTextureObject* texture = image == 0 ? this->Color.Get() : this->Indirect.Get();
+  if (!texture)
+  {
+    return false;
+  }
+  renWin->MakeCurrent();
+  w = texture->GetWidth();
+  h = texture->GetHeight();
+  rgba.resize(static_cast<std::size_t>(w) * h * 4);
+  texture->Activate();
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, rgba.data());
+  texture->Deactivate();
+  return true;
+}
+
+void Composite::ReleaseGraphicsResources(vtkWindow* window)
+{
+  for (vtkTextureObject* texture : { this->Color.Get(), this->Indirect.Get(), this->Display.Get() })
+  {
+    if (texture)
+    {
+      texture->ReleaseGraphicsResources(window);
+    }
+  }
+  this->Color = this->Indirect = this->Display = nullptr;
+  this->Program.Release();
+}
+
+}

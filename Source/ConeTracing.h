@@ -1,0 +1,40 @@
+/**
+ * Host side of Shaders/cone_tracing.glsl, the voxel cone tracing shared by the per-voxel
+ * VoxelBounce and the per-pixel ConeTrace: the cone directions and the samplers and uniforms
+ * of the radiance volume and its mipmaps.
+ */
+#ifndef VoxelGIConeTracing_h
+#define VoxelGIConeTracing_h
+
+#include "GLHelpers.h"
+#include "VoxelMipmap.h"
+#include "shader_interface.h"
+
+namespace voxelgi
+{
+struct Settings;
+
+/// Cone parameters shared by the bounce and the per-pixel trace.
+struct ConeSettings
+{
+  float Directions[VOXELGI_MAX_CONES * 3]; // tangent space, z along the normal
+  int Count = 0;
+  float TanHalf = 0.f;
+  float StepFactor = 1.f;
+  float MaxDistance = 0.f; // voxels
+
+  /// Fill `count` cosine-distributed directions (a golden-angle spiral over the hemisphere,
+  /// kept clear of the surface's own plane) for cones of full aperture `apertureDegrees`.
+  void Set(int count, double apertureDegrees, double stepFactor, double maxDistance);
+  /// The same from the settings of a grid of `resolution` voxels.
+  void Set(const Settings& settings, int resolution);
+};
+
+/// Bind the cone-tracing samplers and uniforms (Shaders/cone_tracing.glsl) of `program`,
+/// reading mip levels from `minLevel` on.
+void SetConeTracingSamplers(ComputeProgram& program, SamplerBindings& samplers,
+  const Volume3D& radiance, const VoxelMipmap& mips, float minLevel, float stepFactor);
+
+}
+
+#endif

@@ -1,0 +1,90 @@
+#include "Frame.h"
+
+#include "vtkVoxelGIPass.h"
+
+namespace voxelgi
+{
+
+Settings Snapshot(vtkVoxelGIPass* pass, bool hasConservativeRaster)
+{
+  Settings c;
+  c.VoxelResolution = pass->GetVoxelResolution();
+  c.GridPadding = pass->GetGridPadding();
+  c.AutoDynamic = pass->GetAutoDynamic() != 0;
+  c.HardwareConservativeRaster = pass->GetHardwareConservativeRaster() && hasConservativeRaster;
+  c.UpdatePolicy = pass->GetUpdatePolicy();
+  c.UpdateInterval = pass->GetUpdateInterval();
+  c.LightOcclusion = pass->GetLightOcclusion();
+  c.ShadowMapResolution = pass->GetShadowMapResolution();
+  c.Bounces = pass->GetBounces();
+  c.AnisotropicMipmaps = pass->GetAnisotropicMipmaps() != 0;
+  c.DiffuseConeCount = pass->GetDiffuseConeCount();
+  c.DiffuseConeAperture = pass->GetDiffuseConeAperture();
+  c.ConeStepFactor = pass->GetConeStepFactor();
+  c.MaxTraceDistance = pass->GetMaxTraceDistance();
+  c.ConeStartOffset = pass->GetConeStartOffset();
+  c.TraceResolution = pass->GetTraceResolution();
+  c.IndirectIntensity = pass->GetIndirectIntensity();
+  c.SpecularCone = pass->GetSpecularCone() != 0;
+  c.SpecularIntensity = pass->GetSpecularIntensity();
+  c.AmbientOcclusionStrength = pass->GetAmbientOcclusionStrength();
+  c.AmbientOcclusionFalloff = pass->GetAmbientOcclusionFalloff();
+  c.ConeShadows = pass->GetConeShadows() != 0;
+  c.ShadowConeAperture = pass->GetShadowConeAperture();
+  c.DebugView = pass->GetDebugView();
+  c.TimeStages = pass->GetTimeStages() != 0;
+  return c;
+}
+
+void StageClock::Reset()
+{
+  this->DidRun.fill(false);
+  this->Times.fill(0.0);
+}
+
+void StageClock::Begin(int stage)
+{
+  // A stage that runs in several parts (the trace and its composite) is timed from the
+  // start of its first part to the end of its last.
+  if (this->Timing && !this->DidRun[stage])
+  {
+    this->Timers[stage].Begin();
+  }
+  this->DidRun[stage] = true;
+}
+
+void StageClock::End(int stage)
+{
+  if (this->Timing)
+  {
+    this->Timers[stage].End();
+  }
+}
+
+void StageClock::SetCpuTime(int stage, double milliseconds)
+{
+  this->DidRun[stage] = true;
+  this->Times[stage] = milliseconds;
+}
+
+void StageClock::Resolve(int stageCount)
+{
+  for (int stage = 0; stage < stageCount && this->Timing; ++stage)
+  {
+    if (this->Timers[stage].IsAllocated())
+    {
+      const double ms = this->Timers[stage].Milliseconds();
+      this->Times[stage] = this->DidRun[stage] ? ms : 0.0;
+    }
+  }
+}
+
+void StageClock::ReleaseGraphicsResources()
+{
+  for (auto& timer : this->Timers)
+  {
+    timer.Release();
+  }
+}
+
+}

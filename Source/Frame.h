@@ -1,0 +1,131 @@
+/**
+ * What every stage of vtkVoxelGIPass sees of one frame: the renderer and its window, the
+ * render state VTK passed in, the voxel grid, a snapshot of the pass's settings, and the
+ * stage clock. Every stage has one shape: `Prepare(const Frame&)` (allocate what the frame
+ * needs, build programs; false with a message when it cannot), `Run(const Frame&)` (do the
+ * work), `ReleaseGraphicsResources(vtkWindow*)` (free every GL object, context current).
+ */
+#ifndef VoxelGIFrame_h
+#define VoxelGIFrame_h
+
+#include "GLHelpers.h"
+#include "SceneScan.h"
+#include "VoxelGrid.h"
+
+#include <array>
+#include <string>
+
+class vtkOpenGLRenderWindow;
+class vtkRenderPass;
+class vtkRenderState;
+class vtkRenderer;
+class vtkVoxelGIPass;
+
+namespace voxelgi
+{
+
+/// The pass's settings as the stages read them (see vtkVoxelGIPass.h for their meaning).
+struct Settings
+{
+  int VoxelResolution = 0;
+  double GridPadding = 0.0;
+  bool AutoDynamic = true;
+  bool HardwareConservativeRaster = true;
+  int UpdatePolicy = 0;
+  int UpdateInterval = 1;
+  int LightOcclusion = 0;
+  int ShadowMapResolution = 0;
+  int Bounces = 0;
+  bool AnisotropicMipmaps = true;
+  int DiffuseConeCount = 1;
+  double DiffuseConeAperture = 0.0;
+  double ConeStepFactor = 0.0;
+  double MaxTraceDistance = 0.0;
+  double ConeStartOffset = 0.0;
+  double TraceResolution = 1.0;
+  double IndirectIntensity = 0.0;
+  bool SpecularCone = true;
+  double SpecularIntensity = 0.0;
+  double AmbientOcclusionStrength = 0.0;
+  double AmbientOcclusionFalloff = 0.0;
+  bool ConeShadows = true;
+  double ShadowConeAperture = 0.0;
+  int DebugView = 0;
+  bool TimeStages = false;
+};
+
+/// The pass's settings now; HardwareConservativeRaster only where the context has it.
+Settings Snapshot(vtkVoxelGIPass* pass, bool hasConservativeRaster);
+
+/// Which stages ran in a frame and, with timing on, their GPU (or, for the scan, CPU) time.
+class StageClock
+{
+public:
+  static constexpr int MaxStages = 16;
+
+  void Reset();
+  void Begin(int stage);
+  void End(int stage);
+  /// Record a CPU-measured stage.
+  void SetCpuTime(int stage, double milliseconds);
+  /// Collect the GPU times of the stages that ran (waits for the GPU).
+  void Resolve(int stageCount);
+  bool Ran(int stage) const { return this->DidRun[stage]; }
+  double Milliseconds(int stage) const { return this->Times[stage]; }
+  void SetTiming(bool on) { this->Timing = on; }
+  void ReleaseGraphicsResources();
+
+private:
+  bool Timing = false;
+  std::array<StageTimer, MaxStages> Timers;
+  std::array<bool, MaxStages> DidRun{};
+  std::array<double, MaxStages> Times{};
+};
+
+/// Marks a stage as run and times it, for the lifetime of the object.
+class ScopedStage
+{
+public:
+  ScopedStage(StageClock& clock, int stage)
+    : Clock(clock)
+    , Stage(stage)
+  {
+    clock.Begin(stage);
+  }
+  ~ScopedStage() { this->Clock.End(this->Stage); }
+  ScopedStage(const ScopedStage&) = delete;
+  ScopedStage& operator=(const ScopedStage&) = delete;
+
+private:
+  StageClock& Clock;
+  int Stage;
+};
+
+struct Frame
+{
+  vtkRenderer* Renderer = nullptr;
+  vtkOpenGLRenderWindow* Window = nullptr;
+  const vtkRenderState* State = nullptr;
+  /// The pass that renders VTK's own image (vtkVoxelGIPass's delegate).
+  vtkRenderPass* Delegate = nullptr;
+  Settings Config;
+  StageClock* Clock = nullptr;
+  /// The scan's decision for the voxels, and the actors they are built from.
+  VoxelUpdate Voxels;
+  const std::vector<ActorRecord>* Actors = nullptr;
+  /// The grid of the current voxels.
+  VoxelGrid Grid;
+  /// Whether the renderer has lights GI uses (else lit surfaces show only their ambient term).
+  bool LitScene = true;
+  /// Whether any voxelized actor is specular (else no specular cone).
+  bool AnySpecular = false;
+  /// The renderer's viewport in the window (tiled size and origin).
+  int Width = 0;
+  int Height = 0;
+  int X = 0;
+  int Y = 0;
+};
+
+}
+
+#endif

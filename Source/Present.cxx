@@ -1,0 +1,82 @@
+#include "Present.h"
+
+#include "Frame.h"
+#include "VoxelGIShaders.h"
+#include "vtkVoxelGIPass.h"
+
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
+#include "vtkRenderStepsPass.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h"
+
+namespace voxelgi
+{
+
+Present::Present() = default;
+Present::~Present() = default;
+
+void Present::Run(const Frame& frame, vtkTextureObject* image, vtkTextureObject* depth)
+{
+  vtkShaderProgram* program = ReadyQuad(this->Quad, frame.Window, shaders::present_frag);
+  if (!program || !image)
+  {
+    return;
+  }
+  // Without a depth image, depth writes are masked: the shader's depth output is discarded.
+  ScopedTextures inputs({ image, depth });
+  program->SetUniformi("compositeColor", image->GetTextureUnit());
+  program->SetUniformi("gbufferDepth", (depth ? depth : image)->GetTextureUnit());
+  vtkOpenGLState* ostate = frame.Window->GetState();
+  vtkOpenGLState::ScopedglViewport viewport(ostate);
+  vtkOpenGLState::ScopedglScissor scissor(ostate);
+  vtkOpenGLState::ScopedglEnableDisable scissorTest(ostate, GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglEnableDisable depthTest(ostate, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable blend(ostate, GL_BLEND);
+  vtkOpenGLState::ScopedglDepthFunc depthFunc(ostate);
+  vtkOpenGLState::ScopedglDepthMask depthMask(ostate);
+  ostate->vtkglEnable(GL_SCISSOR_TEST);
+  ostate->vtkglViewport(frame.X, frame.Y, frame.Width, frame.Height);
+  ostate->vtkglScissor(frame.X, frame.Y, frame.Width, frame.Height);
+  ostate->vtkglDisable(GL_BLEND);
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  ostate->vtkglDepthFunc(GL_ALWAYS);
+  ostate->vtkglDepthMask(depth ? GL_TRUE : GL_FALSE);
+  this->Quad->Render();
+}
+
+int Present::RenderRemainingSteps(const Frame& frame)
+{
+  auto* steps = vtkRenderStepsPass::SafeDownCast(frame.Delegate);
+  if (!steps)
+  {
+    return 0;
+  }
+  vtkOpenGLState* ostate = frame.Window->GetState();
+  vtkOpenGLState::ScopedglEnableDisable depthTest(ostate, GL_DEPTH_TEST);
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  int rendered = 0;
+  for (vtkRenderPass* pass : { steps->GetTranslucentPass(), steps->GetVolumetricPass(),
+         steps->GetOverlayPass(), steps->GetPostProcessPass() })
+  {
+    if (pass)
+    {
+      pass->Render(frame.State);
+      rendered += pass->GetNumberOfRenderedProps();
+    }
+  }
+  return rendered;
+}
+
+void Present::ReleaseGraphicsResources(vtkWindow* window)
+{
+  if (this->Quad)
+  {
+    this->Quad->ReleaseGraphicsResources(window);
+    this->Quad.reset();
+  }
+}
+
+}

@@ -1,0 +1,399 @@
+#include "SceneScan.h"
+
+#include "Frame.h"
+#include "vtkVoxelGIPass.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkDataObject.h"
+#include "vtkInformation.h"
+#include "vtkInformationDoubleVectorKey.h"
+#include "vtkInformationIntegerKey.h"
+#include "vtkMapper.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkOpenGLPolyDataMapper.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPropCollection.h"
+#include "vtkProperty.h"
+#include "vtkRenderer.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <sstream>
+#include <unordered_map>
+
+namespace voxelgi
+{
+
+bool SetEmissionKey(vtkProp* prop, const double rgb[3])
+{
+  if (!std::all_of(rgb, rgb + 3, [](double v) { return std::isfinite(v) && v >= 0.0; }))
+  {
+    return false;
+  }
+  vtkInformation* info = EnsurePropertyKeys(prop);
+  if (rgb[0] == 0.0 && rgb[1] == 0.0 && rgb[2] == 0.0)
+  {
+    info->Remove(vtkVoxelGIPass::EMISSION());
+  }
+  else
+  {
+    info->Set(vtkVoxelGIPass::EMISSION(), rgb, 3);
+  }
+  return true;
+}
+
+std::array<double, 3> PropEmission(vtkProp* prop)
+{
+  std::array<double, 3> e{ { 0.0, 0.0, 0.0 } };
+  vtkInformation* info = prop->GetPropertyKeys();
+  if (info && info->Has(vtkVoxelGIPass::EMISSION()))
+  {
+    const double* v = info->Get(vtkVoxelGIPass::EMISSION());
+    for (int c = 0; c < 3; ++c)
+    {
+      // Keys set around SetPropEmission() may still hold bad values: never let them through.
+      e[c] = std::isfinite(v[c]) ? std::max(v[c], 0.0) : 0.0;
+    }
+  }
+  return e;
+}
+
+namespace
+{
+bool PropUserDynamic(vtkProp* prop)
+{
+  vtkInformation* info = prop->GetPropertyKeys();
+  return info && info->Has(vtkVoxelGIPass::DYNAMIC()) && info->Get(vtkVoxelGIPass::DYNAMIC());
+}
+
+/// Warning for an actor whose input has NaN or Inf point coordinates, or empty.
+std::string NonFinitePoints(vtkActor* actor)
+{
+  vtkPolyData* poly = vtkPolyData::SafeDownCast(actor->GetMapper()->GetInputDataObject(0, 0));
+  vtkPoints* points = poly ? poly->GetPoints() : nullptr;
+  if (!points)
+  {
+    return std::string();
+  }
+  vtkIdType bad = 0;
+  double p[3];
+  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+  {
+    points->GetPoint(i, p);
+    bad += (std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])) ? 0 : 1;
+  }
+  if (bad == 0)
+  {
+    return std::string();
+  }
+  std::ostringstream text;
+  text << "An actor has " << bad << " of " << points->GetNumberOfPoints()
+       << " points with NaN or Inf coordinates; its triangles that use them are not voxelized.";
+  return text.str();
+}
+
+/// Why a visible prop with bounds is not voxelized: 0 when it is, 1 left to VTK, 2 skipped.
+int LeftOut(vtkProp* prop)
+{
+  vtkActor* actor = vtkActor::SafeDownCast(prop);
+  if (!actor)
+  {
+    return prop->IsA("vtkVolume") ? 1 : 2;
+  }
+  if (!vtkOpenGLPolyDataMapper::SafeDownCast(actor->GetMapper()) ||
+    actor->GetProperty()->GetRepresentation() != VTK_SURFACE || !actor->HasOpaqueGeometry())
+  {
+    return 1;
+  }
+  return 0;
+}
+
+void Merge(double bounds[6], const double* b, bool first)
+{
+  for (int i = 0; i < 3; ++i)
+  {
+    bounds[2 * i] = first ? b[2 * i] : std::min(bounds[2 * i], b[2 * i]);
+    bounds[2 * i + 1] = first ? b[2 * i + 1] : std::max(bounds[2 * i + 1], b[2 * i + 1]);
+  }
+}
+}
+
+//------------------------------------------------------------------------------
+vtkInformation* EnsurePropertyKeys(vtkProp* prop)
+{
+  if (!prop->GetPropertyKeys())
+  {
+    vtkNew<vtkInformation> info;
+    prop->SetPropertyKeys(info);
+  }
+  return prop->GetPropertyKeys();
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType SceneScan::ActorSignature(vtkActor* actor)
+{
+  vtkMTimeType t = actor->GetMTime();
+  vtkMapper* mapper = actor->GetMapper();
+  t = std::max(t, mapper->GetMTime());
+  if (vtkDataObject* input = mapper->GetInputDataObject(0, 0))
+  {
+    t = std::max(t, input->GetMTime());
+  }
+  return t;
+}
+
+//------------------------------------------------------------------------------
+bool SceneScan::Collect(vtkRenderer* renderer, std::vector<ActorRecord>& records,
+  double bounds[6], std::vector<std::string>& warnings)
+{
+  // Every visible opaque surface actor drawn by a polydata mapper, including the ones outside
+  // the view frustum (they still cast and reflect light).
+  std::unordered_map<vtkActor*, const ActorRecord*> previous;
+  for (const ActorRecord& record : this->Records)
+  {
+    if (record.Actor)
+    {
+      previous[record.Actor] = &record;
+    }
+  }
+  vtkMath::UninitializeBounds(bounds);
+  std::size_t leftOut = 0; // visible 3D props VTK renders without GI
+  bool anySpecular = false;
+  vtkPropCollection* props = renderer->GetViewProps();
+  vtkCollectionSimpleIterator it;
+  props->InitTraversal(it);
+  while (vtkProp* prop = props->GetNextProp(it))
+  {
+    // Empty props (e.g. ParaView's selection and axes actors) are neither voxelized nor
+    // worth a warning.
+    const double* b = prop->GetVisibility() ? prop->GetBounds() : nullptr;
+    if (!b || !vtkMath::AreBoundsInitialized(b))
+    {
+      continue;
+    }
+    const int reason = LeftOut(prop);
+    if (reason != 0)
+    {
+      leftOut += reason == 1 ? 1 : 0;
+      continue;
+    }
+    if (!std::all_of(b, b + 6, [](double v) { return std::isfinite(v); }))
+    {
+      warnings.emplace_back("An actor has non-finite bounds (NaN or Inf coordinates); it is left "
+                            "out of the voxel grid.");
+      continue;
+    }
+    vtkActor* actor = static_cast<vtkActor*>(prop);
+    // Before reading the signature: VTK modifies a prop when it first gets property keys.
+    EnsurePropertyKeys(actor);
+    ActorRecord record;
+    record.Actor = actor;
+    record.Signature = ActorSignature(actor);
+    auto found = previous.find(actor);
+    if (found == previous.end() || record.Signature > found->second->Signature)
+    {
+      std::string bad = NonFinitePoints(actor); // new or changed input: check it once
+      if (!bad.empty())
+      {
+        warnings.push_back(bad);
+      }
+    }
+    record.Emission = PropEmission(actor);
+    record.UserDynamic = PropUserDynamic(actor);
+    record.Dynamic = record.UserDynamic || (found != previous.end() && found->second->Dynamic);
+    Merge(bounds, b, records.empty());
+    anySpecular = anySpecular || actor->GetProperty()->GetSpecular() > 0.0;
+    records.push_back(record);
+  }
+  if (leftOut > this->WarnedLeftOut)
+  {
+    std::ostringstream text;
+    text << leftOut
+         << " visible props (translucent, volume, points or wireframe) are rendered by VTK "
+            "without voxel GI.";
+    warnings.push_back(text.str());
+    this->WarnedLeftOut = leftOut;
+  }
+  this->AnySpecular = anySpecular;
+  return !records.empty();
+}
+
+//------------------------------------------------------------------------------
+void SceneScan::Compare(
+  std::vector<ActorRecord>& records, bool autoDynamic, bool& full, bool& dynamic) const
+{
+  full = !this->Voxelized || records.size() != this->Records.size();
+  dynamic = false;
+  for (std::size_t i = 0; i < records.size() && !full; ++i)
+  {
+    ActorRecord& record = records[i];
+    const ActorRecord& old = this->Records[i];
+    if (old.Actor.GetPointer() != record.Actor.GetPointer())
+    {
+      full = true;
+      break;
+    }
+    const bool changed = record.Signature > old.Signature || record.Emission != old.Emission;
+    if (record.UserDynamic != old.UserDynamic)
+    {
+      full = true; // the static/dynamic split itself changed
+    }
+    else if (changed && record.Dynamic)
+    {
+      dynamic = true;
+    }
+    else if (changed)
+    {
+      full = true;
+      record.Dynamic = autoDynamic;
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+bool SceneScan::Due(const Settings& settings, bool settingsChanged, bool pending)
+{
+  // Changes of the voxel settings (and the first frame) always rebuild; changes of the scene
+  // follow the update policy.
+  const bool forced = settingsChanged || this->InvalidateRequested;
+  switch (settings.UpdatePolicy)
+  {
+    case vtkVoxelGIPass::UPDATE_EVERY_FRAME:
+      return true;
+    case vtkVoxelGIPass::UPDATE_EVERY_N_FRAMES:
+      return forced || (pending && this->FramesSinceUpdate + 1 >= settings.UpdateInterval);
+    case vtkVoxelGIPass::UPDATE_ON_DEMAND:
+      return forced;
+    default:
+      return forced || pending;
+  }
+}
+
+//------------------------------------------------------------------------------
+bool SceneScan::Scan(
+  vtkRenderer* renderer, const Settings& settings, VoxelUpdate& update, ScanMessages& messages)
+{
+  const auto start = std::chrono::steady_clock::now();
+  struct StopWatch
+  {
+    std::chrono::steady_clock::time_point Start;
+    double& Result;
+    ~StopWatch()
+    {
+      this->Result = std::chrono::duration<double, std::milli>(
+        std::chrono::steady_clock::now() - this->Start).count();
+    }
+  } watch{ start, this->Milliseconds };
+
+  update = VoxelUpdate();
+  std::vector<ActorRecord> records;
+  double bounds[6];
+  if (!this->Collect(renderer, records, bounds, messages.Warnings))
+  {
+    this->Records.clear();
+    return false;
+  }
+  bool full = false, dynamic = false;
+  this->Compare(records, settings.AutoDynamic, full, dynamic);
+  double emissionScale = 0.0;
+  for (const ActorRecord& record : records)
+  {
+    emissionScale = std::max(
+      { emissionScale, record.Emission[0], record.Emission[1], record.Emission[2] });
+  }
+  // Emission is stored relative to the scene's brightest emitter.
+  full = full || emissionScale != this->BuiltEmissionScale;
+  const bool emission = emissionScale > 0.0;
+  const bool settingsChanged = !this->Voxelized || !this->BuiltGrid.IsValid() ||
+    this->BuiltGrid.Resolution != settings.VoxelResolution ||
+    this->BuiltPadding != settings.GridPadding ||
+    emission != (this->BuiltEmissionScale > 0.0) ||
+    settings.HardwareConservativeRaster != this->BuiltHardware;
+  // The scene left the grid or shrank to under half of it.
+  const double extent =
+    std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] });
+  const bool refit = settingsChanged || !this->BuiltGrid.Covers(bounds) ||
+    extent * (1.0 + 2.0 * settings.GridPadding) < 0.5 * this->BuiltGrid.Size();
+  if (!this->Due(settings, settingsChanged, full || dynamic || refit))
+  {
+    // Keep the voxels and the records they were built from: the change stays pending.
+    ++this->FramesSinceUpdate;
+    return true;
+  }
+  update.Full = full || refit || this->InvalidateRequested ||
+    settings.UpdatePolicy == vtkVoxelGIPass::UPDATE_EVERY_FRAME;
+  this->InvalidateRequested = false;
+  this->FramesSinceUpdate = 0;
+  update.Grid = this->BuiltGrid;
+  if (refit &&
+    FitVoxelGrid(bounds, settings.VoxelResolution, settings.GridPadding, update.Grid) !=
+      FitStatus::Ok)
+  {
+    messages.Error = "Could not fit a voxel grid around the scene bounds; rendering without GI.";
+    this->Records.clear();
+    return false;
+  }
+  update.Run = true;
+  update.Emission = emission;
+  update.EmissionScale = emissionScale;
+  this->Pending = std::move(records);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void SceneScan::Accept(const VoxelUpdate& update, const Settings& settings)
+{
+  this->Records = std::move(this->Pending);
+  this->Pending.clear();
+  this->BuiltGrid = update.Grid;
+  this->BuiltPadding = settings.GridPadding;
+  this->BuiltEmissionScale = update.EmissionScale;
+  this->BuiltHardware = settings.HardwareConservativeRaster;
+  this->Voxelized = true;
+}
+
+void SceneScan::Reset()
+{
+  this->Records.clear();
+  this->Pending.clear();
+  this->Voxelized = false;
+  this->BuiltGrid = VoxelGrid();
+}
+
+void SceneScan::RefreshSignatures()
+{
+  for (ActorRecord& record : this->Records)
+  {
+    if (record.Actor)
+    {
+      record.Signature = ActorSignature(record.Actor);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+bool SceneScan::Unchanged(vtkRenderer* renderer, vtkMTimeType settingsTime)
+{
+  std::vector<unsigned long long> key{ renderer->GetMTime(), settingsTime,
+    renderer->GetActiveCamera()->GetMTime() };
+  int size[4];
+  renderer->GetTiledSizeAndOrigin(size, size + 1, size + 2, size + 3);
+  key.insert(key.end(), size, size + 4);
+  vtkCollectionSimpleIterator it;
+  renderer->GetViewProps()->InitTraversal(it);
+  while (vtkProp* prop = renderer->GetViewProps()->GetNextProp(it))
+  {
+    vtkActor* actor = vtkActor::SafeDownCast(prop);
+    key.push_back(actor && actor->GetMapper() ? ActorSignature(actor) : prop->GetMTime());
+    key.push_back(prop->GetVisibility());
+  }
+  const bool same = key == this->FrameKey;
+  this->FrameKey = std::move(key);
+  return same;
+}
+
+}

@@ -1,0 +1,134 @@
+/**
+ * Scan stage (CPU, GL-free, every frame): collects the renderer's voxelized props, compares
+ * their modification times with the frame the voxels were built from, applies the update
+ * policy and fits the voxel grid. It decides what the Voxelize stage does ("leave out what
+ * the scene does not need"): nothing, the dynamic actors alone, or everything. It also keys
+ * the traced image, so that a frame in which nothing changed presents the last one again.
+ *
+ * Unit tested without a GL context (Testing/Unit/TestSceneScan.cxx).
+ */
+#ifndef VoxelGISceneScan_h
+#define VoxelGISceneScan_h
+
+#include "VoxelGrid.h"
+
+#include "vtkType.h"         // for vtkMTimeType
+#include "vtkWeakPointer.h"  // for vtkWeakPointer
+
+#include <array>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+class vtkActor;
+class vtkInformation;
+class vtkProp;
+class vtkRenderer;
+
+namespace voxelgi
+{
+struct Settings;
+
+/// The prop's property keys, created if it has none (VTK modifies a prop when it gets them).
+vtkInformation* EnsurePropertyKeys(vtkProp* prop);
+
+/// Set (or, for black, remove) a prop's emission key; false, leaving it, for negative or
+/// non-finite values.
+bool SetEmissionKey(vtkProp* prop, const double rgb[3]);
+
+/// A prop's emission key (vtkVoxelGIPass::EMISSION()), non-finite or negative values as 0.
+std::array<double, 3> PropEmission(vtkProp* prop);
+
+/// What the scan remembers of a voxelized actor between frames.
+struct ActorRecord
+{
+  vtkWeakPointer<vtkActor> Actor;
+  vtkMTimeType Signature = 0; // latest modification time of actor, mapper and input
+  std::array<double, 3> Emission{ { 0.0, 0.0, 0.0 } };
+  bool UserDynamic = false;
+  bool Dynamic = false; // user choice, or changed after voxelization (AutoDynamic)
+};
+
+/// What the scan has to tell the user; the pass reports it.
+struct ScanMessages
+{
+  std::vector<std::string> Warnings;
+  std::string Error;
+};
+
+/// What the Voxelize stage has to do this frame.
+struct VoxelUpdate
+{
+  bool Run = false;     // rebuild any voxels at all
+  bool Full = false;    // all of them (else the dynamic actors only)
+  bool Emission = false; // the scene has emissive props
+  double EmissionScale = 0.0; // brightest emission: voxels store emission relative to it
+  VoxelGrid Grid;       // the grid to voxelize into
+};
+
+class SceneScan
+{
+public:
+  /// Scan `renderer` with `settings` (HardwareConservativeRaster: on and available). Returns
+  /// false when there is nothing to voxelize or no grid fits the scene (then `messages` has
+  /// the error): GI cannot run this frame. `update` says what to rebuild.
+  bool Scan(vtkRenderer* renderer, const Settings& settings, VoxelUpdate& update,
+    ScanMessages& messages);
+  /// The voxels were rebuilt as `update` said: remember what they were built from.
+  void Accept(const VoxelUpdate& update, const Settings& settings);
+  /// The voxels are gone (released, or could not be built): the next scan rebuilds all.
+  void Reset();
+  /// Force a full rebuild at the next scan, whatever the update policy.
+  void Invalidate() { this->InvalidateRequested = true; }
+  /// Re-read the signatures of the actors after a frame that voxelized: changes VTK made
+  /// while rendering (a mapper creating its default lookup table) are not news.
+  void RefreshSignatures();
+
+  /// The grid of the current voxels (invalid before the first voxelization).
+  const VoxelGrid& GetGrid() const { return this->BuiltGrid; }
+  /// The actors the voxels were built from, in scene order.
+  const std::vector<ActorRecord>& GetRecords() const { return this->Records; }
+  /// Any voxelized actor with a specular coefficient above 0 (else no specular cone).
+  bool GetAnySpecular() const { return this->AnySpecular; }
+  /// Whether the last accepted voxels used the hardware conservative rasterizer.
+  bool GetBuiltHardwareConservative() const { return this->BuiltHardware; }
+  /// CPU time of the last Scan(), milliseconds.
+  double GetMilliseconds() const { return this->Milliseconds; }
+
+  /// Whether the image traced last frame can be presented again: nothing it depends on
+  /// (renderer, camera, viewport, props, the pass's settings as `settingsTime`) changed.
+  /// Remembers this frame's state for the next call.
+  bool Unchanged(vtkRenderer* renderer, vtkMTimeType settingsTime);
+  /// Forget the remembered state (the next Unchanged() is false).
+  void ForgetFrame() { this->FrameKey.clear(); }
+
+  /// Latest modification time of an actor, its mapper and the mapper's input.
+  static vtkMTimeType ActorSignature(vtkActor* actor);
+
+private:
+  /// Collect the visible opaque surface actors; false when there is none.
+  bool Collect(vtkRenderer* renderer, std::vector<ActorRecord>& records, double bounds[6],
+    std::vector<std::string>& warnings);
+  /// Compare with the accepted records: full rebuild, dynamic change, or nothing.
+  void Compare(std::vector<ActorRecord>& records, bool autoDynamic, bool& full, bool& dynamic) const;
+  /// Update policy: is a pending change rebuilt this frame?
+  bool Due(const Settings& settings, bool settingsChanged, bool pending);
+
+  std::vector<ActorRecord> Records;
+  std::vector<ActorRecord> Pending; // scanned, waiting for Accept()
+  bool Voxelized = false;
+  VoxelGrid BuiltGrid;
+  double BuiltPadding = -1.0;
+  double BuiltEmissionScale = 0.0;
+  bool BuiltHardware = false;
+  bool InvalidateRequested = false;
+  int FramesSinceUpdate = 0;
+  bool AnySpecular = false;
+  std::size_t WarnedLeftOut = 0;
+  double Milliseconds = 0.0;
+  std::vector<unsigned long long> FrameKey;
+};
+
+}
+
+#endif

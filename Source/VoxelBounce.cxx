@@ -1,0 +1,58 @@
+#include "VoxelBounce.h"
+
+#include "Frame.h"
+#include "LightVoxels.h"
+#include "VoxelGIShaders.h"
+#include "VoxelMipmap.h"
+#include "VoxelizePass.h"
+#include "vtkVoxelGIPass.h"
+
+#include "vtk_glew.h"
+
+
+namespace voxelgi
+{
+
+bool VoxelBounce::Prepare(const Frame& frame, std::string& error)
+{
+  this->Cones.Set(frame.Config, frame.Grid.Resolution);
+  return this->Program.BuildOnce(shaders::voxel_bounce_comp, "voxel bounce", error);
+}
+
+void VoxelBounce::Run(const Frame& frame)
+{
+  // Bounce and mipmap timings would nest: time them together.
+  ScopedStage stage(*frame.Clock, vtkVoxelGIPass::STAGE_BOUNCE);
+  for (int bounce = 0; bounce < frame.Config.Bounces; ++bounce)
+  {
+    this->Bounce(frame);
+    this->Mipmap.Build(frame.Window);
+  }
+}
+
+void VoxelBounce::Bounce(const Frame& frame)
+{
+  SamplerBindings samplers(frame.Window);
+  ComputeProgram& p = this->Program;
+  p.Use(frame.Window);
+  // The bounce writes the radiance volume, so it reads only the mipmaps (level >= 1).
+  Volume3D& radiance = this->Lighting.GetRadiance();
+  SetConeTracingSamplers(p, samplers, radiance, this->Mipmap, 1.0f, this->Cones.StepFactor);
+  p.SetInt("voxelAlbedo", samplers.Add(this->Voxels.GetAlbedo()));
+  p.SetInt("voxelNormal", samplers.Add(this->Voxels.GetNormal()));
+  p.SetInt("voxelDirect", samplers.Add(this->Lighting.GetDirect()));
+  p.SetVec3Array("coneDirections", this->Cones.Count, this->Cones.Directions);
+  p.SetInt("coneCount", this->Cones.Count);
+  p.SetFloat("coneTanHalf", this->Cones.TanHalf);
+  p.SetFloat("maxDistance", this->Cones.MaxDistance);
+  radiance.BindImage(0, GL_WRITE_ONLY);
+  p.DispatchCube(radiance.Resolution(), VOXELGI_LOCAL_SIZE);
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+}
+
+void VoxelBounce::ReleaseGraphicsResources(vtkWindow*)
+{
+  this->Program.Release();
+}
+
+}

@@ -1,0 +1,51 @@
+/**
+ * Bounce stage (voxel_bounce.comp): each bounce cone-traces every occupied voxel through the
+ * mipmaps of the current radiance and sets radiance = direct + albedo x gathered, then the
+ * mipmaps are rebuilt. Cone weights sum to one and albedo is below one, so repeated bounces
+ * converge from below (energy bounded).
+ */
+#ifndef VoxelGIVoxelBounce_h
+#define VoxelGIVoxelBounce_h
+
+#include "ConeTracing.h"
+#include "GLHelpers.h"
+
+#include <string>
+
+class vtkWindow;
+
+namespace voxelgi
+{
+struct Frame;
+class LightVoxels;
+class VoxelMipmap;
+class VoxelizePass;
+
+class VoxelBounce
+{
+public:
+  VoxelBounce(const VoxelizePass& voxels, LightVoxels& lighting, VoxelMipmap& mipmap)
+    : Voxels(voxels)
+    , Lighting(lighting)
+    , Mipmap(mipmap)
+  {
+  }
+
+  bool Prepare(const Frame& frame, std::string& error);
+  /// The frame's Bounces bounces, each followed by a rebuild of the mipmaps.
+  void Run(const Frame& frame);
+  void ReleaseGraphicsResources(vtkWindow* window);
+
+private:
+  void Bounce(const Frame& frame);
+
+  const VoxelizePass& Voxels;
+  LightVoxels& Lighting;
+  VoxelMipmap& Mipmap;
+  ConeSettings Cones;
+  ComputeProgram Program;
+};
+
+}
+
+#endif

@@ -1,0 +1,263 @@
+// The Scan stage without a GL context: what it decides to rebuild for each kind of change,
+// the update policies, the props it leaves out, and the key of an unchanged frame.
+#include "Frame.h"
+#include "SceneScan.h"
+#include "vtkVoxelGIPass.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkNew.h"
+#include "vtkOpenGLPolyDataMapper.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkProperty.h"
+#include "vtkRenderer.h"
+#include "vtkSphereSource.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+namespace
+{
+vtkSmartPointer<vtkActor> AddSphere(vtkRenderer* renderer, double x)
+{
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetCenter(x, 0.0, 0.0);
+  sphere->Update();
+  vtkNew<vtkOpenGLPolyDataMapper> mapper;
+  mapper->SetInputData(sphere->GetOutput());
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  renderer->AddActor(actor);
+  return actor;
+}
+
+struct ScanFixture : public ::testing::Test
+{
+  vtkNew<vtkRenderer> Renderer;
+  voxelgi::SceneScan Scan;
+  voxelgi::Settings Config;
+  voxelgi::VoxelUpdate Update;
+  voxelgi::ScanMessages Messages;
+
+  ScanFixture()
+  {
+    this->Config.VoxelResolution = 32;
+    this->Config.GridPadding = 0.05;
+    this->Config.UpdatePolicy = vtkVoxelGIPass::UPDATE_ON_CHANGE;
+    this->Config.UpdateInterval = 3;
+  }
+
+  /// Scan; accept what it asks to rebuild (as the pass does after voxelizing).
+  bool Next()
+  {
+    this->Messages = voxelgi::ScanMessages();
+    const bool ok = this->Scan.Scan(this->Renderer, this->Config, this->Update, this->Messages);
+    if (ok && this->Update.Run)
+    {
+      this->Scan.Accept(this->Update, this->Config);
+    }
+    return ok;
+  }
+};
+}
+
+TEST_F(ScanFixture, NothingToVoxelize)
+{
+  EXPECT_FALSE(this->Next());
+  EXPECT_TRUE(this->Messages.Error.empty());
+}
+
+TEST_F(ScanFixture, FirstFrameRebuildsAllThenNothing)
+{
+  AddSphere(this->Renderer, 0.0);
+  ASSERT_TRUE(this->Next());
+  EXPECT_TRUE(this->Update.Run);
+  EXPECT_TRUE(this->Update.Full);
+  EXPECT_FALSE(this->Update.Emission);
+  EXPECT_EQ(this->Update.Grid.Resolution, 32);
+  const double bounds[6] = { -0.5, 0.5, -0.5, 0.5, -0.5, 0.5 };
+  EXPECT_TRUE(this->Update.Grid.Covers(bounds));
+  ASSERT_TRUE(this->Next());
+  EXPECT_FALSE(this->Update.Run);
+  EXPECT_EQ(this->Scan.GetRecords().size(), 1u);
+}
+
+TEST_F(ScanFixture, ChangedStaticActorRebuildsAllAndBecomesDynamic)
+{
+  auto a = AddSphere(this->Renderer, 0.0);
+  AddSphere(this->Renderer, 2.0);
+  ASSERT_TRUE(this->Next());
+  a->GetProperty()->SetColor(1.0, 0.0, 0.0);
+  ASSERT_TRUE(this->Next());
+  EXPECT_TRUE(this->Update.Run);
+  EXPECT_TRUE(this->Update.Full);
+  ASSERT_EQ(this->Scan.GetRecords().size(), 2u);
+  EXPECT_TRUE(this->Scan.GetRecords()[0].Dynamic);
+  EXPECT_FALSE(this->Scan.GetRecords()[1].Dynamic);
+  // Changed again: now it is revoxelized alone.
+  a->GetProperty()->SetColor(0.0, 1.0, 0.0);
+  ASSERT_TRUE(this->Next());
+  EXPECT_TRUE(this->Update.Run);
+  EXPECT_FALSE(this->Update.Full);
+}
+
+TEST_F(ScanFixture, WithoutAutoDynamicEveryChangeIsFull)
+{
+  this->Config.AutoDynamic = false;
+  auto a = AddSphere(this->Renderer, 0.0);
+  ASSERT_TRUE(this->Next());
+  for (int i = 0; i < 2; ++i)
+  {
+    a->GetProperty()->SetColor(0.1 * i, 0.0, 0.0);
+    ASSERT_TRUE(this->Next());
+    EXPECT_TRUE(this->Update.Full);
+    EXPECT_FALSE(this->Scan.GetRecords()[0].Dynamic);
+  }
+}
+
+TEST_F(ScanFixture, UserDynamicActorIsRevoxelizedAlone)
+{
+  auto a = AddSphere(this->Renderer, 0.0);
+  AddSphere(this->Renderer, 2.0);
+  vtkVoxelGIPass::SetPropDynamic(a, true);
+  ASSERT_TRUE(this->Next());
+  a->SetPosition(0.1, 0.0, 0.0);
+  ASSERT_TRUE(this->Next());
+  EXPECT_TRUE(this->Update.Run);
+  EXPECT_FALSE(this->Update.Full);
+}
+
+TEST_F(ScanFixture, AddedActorAndLeavingTheGridRebuildAll)
+{
+  auto a = AddSphere(this->Renderer, 0.0);
+  ASSERT_TRUE(this->Next());
+  AddSphere(this->Renderer, 0.5);
+  ASSERT_TRUE(this->Next());
+  EXPECT_TRUE(this->Update.Full);
+  const voxelgi::VoxelGrid before = this->Scan.GetGrid();
+  vtkVoxelGIPass::SetPropDynamic(a, true);
+  ASSERT_TRUE(this->Next());
+  a->SetPosition(10.0, 0.0, 0.0); // outside the grid: refit, full rebuild
+  ASSERT_TRUE(this->Next());
+  EXPECT_TRUE(this->Update.Full);
+  EXPECT_GT(this->Scan.GetGrid().Size(), before.Size());
+}
+
+TEST_F(ScanFixture, EmissionSetsTheScaleAndRebuildsAll)
+{
+  auto a = AddSphere(this->Renderer, 0.0);
+  ASSERT_TRUE(this->Next());
+  vtkVoxelGIPass::SetPropEmission(a, 2.0, 4.0, 1.0);
+  ASSERT_TRUE(this->Next());
+  EXPECT_TRUE(this->Update.Full);
+  EXPECT_TRUE(this->Update.Emission);
+  EXPECT_DOUBLE_EQ(this->Update.EmissionScale, 4.0);
+}
+
+TEST_F(ScanFixture, OnDemandWaitsForInvalidate)
+{
+  this->Config.UpdatePolicy = vtkVoxelGIPass::UPDATE_ON_DEMAND;
+  auto a = AddSphere(this->Renderer, 0.0);
+  ASSERT_TRUE(this->Next());
+  EXPECT_TRUE(this->Update.Run); // the first frame always builds
+  a->GetProperty()->SetColor(1.0, 0.0, 0.0);
+  ASSERT_TRUE(this->Next());
+  EXPECT_FALSE(this->Update.Run);
+  this->Scan.Invalidate();
+  ASSERT_TRUE(this->Next());
+  EXPECT_TRUE(this->Update.Run);
+  EXPECT_TRUE(this->Update.Full);
+}
+
+TEST_F(ScanFixture, EveryNFramesPicksUpChangesAtTheInterval)
+{
+  this->Config.UpdatePolicy = vtkVoxelGIPass::UPDATE_EVERY_N_FRAMES;
+  auto a = AddSphere(this->Renderer, 0.0);
+  ASSERT_TRUE(this->Next());
+  a->GetProperty()->SetColor(1.0, 0.0, 0.0);
+  ASSERT_TRUE(this->Next());
+  EXPECT_FALSE(this->Update.Run);
+  ASSERT_TRUE(this->Next());
+  EXPECT_FALSE(this->Update.Run);
+  ASSERT_TRUE(this->Next());
+  EXPECT_TRUE(this->Update.Run); // third frame after the last update
+}
+
+TEST_F(ScanFixture, EveryFrameRebuildsAll)
+{
+  this->Config.UpdatePolicy = vtkVoxelGIPass::UPDATE_EVERY_FRAME;
+  AddSphere(this->Renderer, 0.0);
+  for (int i = 0; i < 3; ++i)
+  {
+    ASSERT_TRUE(this->Next());
+    EXPECT_TRUE(this->Update.Run);
+    EXPECT_TRUE(this->Update.Full);
+  }
+}
+
+TEST_F(ScanFixture, VoxelSettingsRebuildWhateverThePolicy)
+{
+  this->Config.UpdatePolicy = vtkVoxelGIPass::UPDATE_ON_DEMAND;
+  AddSphere(this->Renderer, 0.0);
+  ASSERT_TRUE(this->Next());
+  this->Config.VoxelResolution = 64;
+  ASSERT_TRUE(this->Next());
+  EXPECT_TRUE(this->Update.Full);
+  EXPECT_EQ(this->Update.Grid.Resolution, 64);
+}
+
+TEST_F(ScanFixture, TranslucentAndWireframeAreLeftOutWithOneNotice)
+{
+  AddSphere(this->Renderer, 0.0);
+  AddSphere(this->Renderer, 2.0)->GetProperty()->SetOpacity(0.5);
+  AddSphere(this->Renderer, 4.0)->GetProperty()->SetRepresentationToWireframe();
+  ASSERT_TRUE(this->Next());
+  EXPECT_EQ(this->Scan.GetRecords().size(), 1u);
+  ASSERT_EQ(this->Messages.Warnings.size(), 1u);
+  EXPECT_EQ(this->Messages.Warnings[0].rfind("2 visible props", 0), 0u);
+  ASSERT_TRUE(this->Next());
+  EXPECT_TRUE(this->Messages.Warnings.empty()); // said once
+}
+
+TEST_F(ScanFixture, NonFinitePointsAreReported)
+{
+  auto a = AddSphere(this->Renderer, 0.0);
+  auto* poly = vtkPolyData::SafeDownCast(a->GetMapper()->GetInputDataObject(0, 0));
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  poly->GetPoints()->SetPoint(0, nan, 0.0, 0.0);
+  poly->Modified();
+  this->Next();
+  bool reported = false;
+  for (const std::string& w : this->Messages.Warnings)
+  {
+    reported = reported || w.find("NaN or Inf") != std::string::npos;
+  }
+  EXPECT_TRUE(reported);
+}
+
+TEST_F(ScanFixture, SpecularMaterialsAreNoticed)
+{
+  auto a = AddSphere(this->Renderer, 0.0);
+  ASSERT_TRUE(this->Next());
+  EXPECT_FALSE(this->Scan.GetAnySpecular());
+  a->GetProperty()->SetSpecular(0.5);
+  ASSERT_TRUE(this->Next());
+  EXPECT_TRUE(this->Scan.GetAnySpecular());
+}
+
+TEST_F(ScanFixture, UnchangedFrameKey)
+{
+  AddSphere(this->Renderer, 0.0);
+  this->Renderer->GetActiveCamera(); // created on first use, as VTK does before the pass runs
+  EXPECT_FALSE(this->Scan.Unchanged(this->Renderer, 1)); // nothing remembered yet
+  EXPECT_TRUE(this->Scan.Unchanged(this->Renderer, 1));
+  EXPECT_FALSE(this->Scan.Unchanged(this->Renderer, 2)); // the pass's settings changed
+  this->Renderer->GetActiveCamera()->Azimuth(10.0);
+  EXPECT_FALSE(this->Scan.Unchanged(this->Renderer, 2));
+  EXPECT_TRUE(this->Scan.Unchanged(this->Renderer, 2));
+  this->Scan.ForgetFrame();
+  EXPECT_FALSE(this->Scan.Unchanged(this->Renderer, 2));
+}
