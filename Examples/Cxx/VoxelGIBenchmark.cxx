@@ -1,7 +1,8 @@
 // Per-stage timing of vtkVoxelGIPass over scripted frame sequences (a benchmark, not a test).
 //
 //   VoxelGIBenchmark [--scene cornell|field|atrium] [--objects N] [--size WxH] [--resolution R]
-//                    [--frames F] [--warmup W] [--trace-scale S] [--egl] [--csv FILE]
+//                    [--frames F] [--warmup W] [--trace-scale S] [--multisamples N] [--egl]
+//                    [--csv FILE]
 //                    [--json FILE] [--image FILE]
 //
 // Scenes: the Cornell box (36 triangles), a field of N spheres and boxes, and an atrium of
@@ -62,6 +63,7 @@ struct Options
   int Frames = 20;
   int Warmup = 3;
   double TraceScale = 1.0;
+  int MultiSamples = -1; // -1: VTK's default
   bool EGL = false;
   std::string CSV = "voxelgi-benchmark.csv";
   std::string JSON = "voxelgi-benchmark.json";
@@ -252,6 +254,7 @@ bool Parse(int argc, char* argv[], Options& o)
     else if (arg == "--warmup") o.Warmup = std::atoi(next().c_str());
     else if (arg == "--egl") o.EGL = true;
     else if (arg == "--trace-scale") o.TraceScale = std::atof(next().c_str());
+    else if (arg == "--multisamples") o.MultiSamples = std::atoi(next().c_str());
     else if (arg == "--csv") o.CSV = next();
     else if (arg == "--json") o.JSON = next();
     else if (arg == "--image") o.Image = next();
@@ -272,7 +275,7 @@ int main(int argc, char* argv[])
   if (!Parse(argc, argv, o))
   {
     std::cerr << "usage: VoxelGIBenchmark [--scene cornell|field|atrium] [--objects N] [--size WxH] "
-                 "[--resolution R] [--frames F] [--warmup W] [--trace-scale S] [--egl] "
+                 "[--resolution R] [--frames F] [--warmup W] [--trace-scale S] [--multisamples N] [--egl] "
                  "[--csv FILE] [--json FILE] "
                  "[--image FILE]"
               << std::endl;
@@ -322,6 +325,10 @@ int main(int argc, char* argv[])
     ? vtkSmartPointer<vtkRenderWindow>(vtkSmartPointer<vtkVoxelGIEGLRenderWindow>::New())
     : vtkSmartPointer<vtkRenderWindow>::New();
   window->SetSize(o.Width, o.Height);
+  if (o.MultiSamples >= 0)
+  {
+    window->SetMultiSamples(o.MultiSamples);
+  }
   window->SetOffScreenRendering(true);
   window->AddRenderer(renderer);
   vtkNew<vtkVoxelGIPass> gi;
@@ -415,11 +422,12 @@ int main(int argc, char* argv[])
   std::ofstream json(o.JSON);
   json << "{\n  \"scene\": \"" << o.Scene << "\", \"triangles\": " << triangles << ", \"width\": "
        << o.Width << ", \"height\": " << o.Height << ", \"resolution\": " << o.Resolution << ", \"trace_scale\": " << o.TraceScale
-       << ", \"frames\": " << o.Frames << ",\n  \"renderer\": \"" << RendererName(window)
+       << ", \"multisamples\": " << window->GetMultiSamples() << ", \"frames\": " << o.Frames << ",\n  \"renderer\": \"" << RendererName(window)
        << "\",\n  \"median_ms\": {\n";
   std::cout << std::fixed << std::setprecision(2) << "\nmedian ms on " << RendererName(window)
             << ", " << o.Scene << " " << o.Width << "x" << o.Height << ", " << o.Resolution
-            << "^3 voxels, trace at " << o.TraceScale << ", " << o.Frames << " frames\n"
+            << "^3 voxels, trace at " << o.TraceScale << ", " << window->GetMultiSamples()
+            << "x MSAA, " << o.Frames << " frames\n"
             << std::setw(12) << "sequence" << std::setw(10) << "frame";
   for (int s = 0; s < vtkVoxelGIPass::NUMBER_OF_STAGES; ++s)
   {
