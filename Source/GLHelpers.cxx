@@ -514,6 +514,15 @@ void StageTimer::Release()
 }
 
 //------------------------------------------------------------------------------
+void ContextVersion(int& major, int& minor)
+{
+  GLint values[2] = { 0, 0 };
+  glGetIntegerv(GL_MAJOR_VERSION, values);
+  glGetIntegerv(GL_MINOR_VERSION, values + 1);
+  major = values[0];
+  minor = values[1];
+}
+
 bool HasExtension(const char* name)
 {
   GLint count = 0;

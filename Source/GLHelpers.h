@@ -250,6 +250,9 @@ vtkShaderProgram* ReadyQuad(
 vtkSmartPointer<vtkTextureObject> NewImageTexture(
   vtkOpenGLRenderWindow* renWin, int internalFormat, int width, int height);
 
+/// The current context's OpenGL version.
+void ContextVersion(int& major, int& minor);
+
 /// Whether the current context lists `name` among its extensions.
 bool HasExtension(const char* name);
 

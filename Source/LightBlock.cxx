@@ -13,8 +13,10 @@
 namespace voxelgi
 {
 
-bool LightBlock::Gather(vtkRenderer* renderer, const VoxelGrid& grid, int& dropped, int& invalid)
+bool LightBlock::Gather(
+  vtkRenderer* renderer, const VoxelGrid& grid, std::vector<std::string>& warnings)
 {
+  int dropped = 0, invalid = 0;
   // VTK creates its automatic headlight and places headlights and camera lights while
   // rendering; do both before reading the lights, or the first frame would see none.
   if (renderer->GetAutomaticLightCreation() && renderer->GetLights()->GetNumberOfItems() == 0)
@@ -24,8 +26,6 @@ bool LightBlock::Gather(vtkRenderer* renderer, const VoxelGrid& grid, int& dropp
   renderer->UpdateLightsGeometryToFollowCamera();
   Block block{};
   int count = 0;
-  dropped = 0;
-  invalid = 0;
   this->Used.clear();
   vtkLightCollection* lights = renderer->GetLights();
   vtkCollectionSimpleIterator it;
@@ -78,6 +78,18 @@ bool LightBlock::Gather(vtkRenderer* renderer, const VoxelGrid& grid, int& dropp
   }
   block.Info[0] = count;
   block.Info[1] = renderer->GetTwoSidedLighting() ? 1 : 0;
+  if (invalid > 0 && !this->WarnedInvalid)
+  {
+    warnings.push_back(std::to_string(invalid) +
+      " light(s) with a negative or non-finite intensity or colour are left out of the GI.");
+    this->WarnedInvalid = true;
+  }
+  if (dropped > 0 && !this->WarnedDropped)
+  {
+    warnings.push_back("Voxel GI uses the first " + std::to_string(MaxLights) + " lights; " +
+      std::to_string(dropped) + " more are left out of the GI.");
+    this->WarnedDropped = true;
+  }
   const bool changed = !this->HaveUploaded || std::memcmp(&block, &this->Uploaded, sizeof(Block)) != 0;
   this->Data = block;
   this->Count = count;

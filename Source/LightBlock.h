@@ -10,6 +10,7 @@
 #include "shader_interface.h"
 
 #include <array>
+#include <string>
 #include <vector>
 
 class vtkLight;
@@ -26,11 +27,10 @@ public:
   static constexpr int MaxLights = VOXELGI_MAX_LIGHTS;
 
   /// Gather the lights (creating VTK's automatic headlight and placing camera-following
-  /// lights first, as VTK does while rendering). Returns
-  /// true when they differ from the last gathered set. Lights beyond MaxLights are dropped
-  /// (counted in `dropped`), so are lights with a negative or non-finite intensity or colour
-  /// (counted in `invalid`).
-  bool Gather(vtkRenderer* renderer, const VoxelGrid& grid, int& dropped, int& invalid);
+  /// lights first, as VTK does while rendering). Returns true when they differ from the last
+  /// gathered set. Lights beyond MaxLights are dropped, so are lights with a negative or
+  /// non-finite intensity or colour; `warnings` says so, once per pass.
+  bool Gather(vtkRenderer* renderer, const VoxelGrid& grid, std::vector<std::string>& warnings);
   /// Upload (when changed) and bind.
   void Bind();
   int GetCount() const { return this->Count; }
@@ -55,6 +55,8 @@ private:
   Block Uploaded{};
   bool HaveUploaded = false;
   int Count = 0;
+  bool WarnedDropped = false;
+  bool WarnedInvalid = false;
   std::vector<vtkLight*> Used;
   StorageBuffer Buffer;
 };

@@ -79,8 +79,32 @@ void LightVoxels::Run(const Frame& frame)
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 }
 
+namespace
+{
+// What the radiance, its mipmaps and bounces depend on beyond voxels and lights.
+std::vector<double> RadianceKey(const Frame& frame)
+{
+  const Settings& c = frame.Config;
+  return { static_cast<double>(c.LightOcclusion), static_cast<double>(c.ShadowMapResolution),
+    static_cast<double>(c.Bounces), static_cast<double>(c.AnisotropicMipmaps),
+    static_cast<double>(c.DiffuseConeCount), c.DiffuseConeAperture, c.ConeStepFactor,
+    c.MaxTraceDistance * frame.Grid.Resolution };
+}
+}
+
+bool LightVoxels::IsCurrent(const Frame& frame, bool changed) const
+{
+  return !changed && !this->Key.empty() && this->Key == RadianceKey(frame);
+}
+
+void LightVoxels::SetCurrent(const Frame& frame, bool valid)
+{
+  this->Key = valid ? RadianceKey(frame) : std::vector<double>();
+}
+
 void LightVoxels::ReleaseGraphicsResources(vtkWindow*)
 {
+  this->Key.clear();
   this->Radiance.Release();
   this->Direct.Release();
   this->Program.Release();

@@ -11,6 +11,7 @@
 #include "GLHelpers.h"
 
 #include <string>
+#include <vector>
 
 class vtkWindow;
 
@@ -34,6 +35,11 @@ public:
   bool Prepare(const Frame& frame, std::string& error);
   /// Direct light and emission into the radiance (and direct) volume.
   void Run(const Frame& frame);
+  /// Whether the radiance (after Mipmap and Bounce) was computed with the frame's voxels,
+  /// lights and settings: `changed` tells whether voxels or lights changed since.
+  bool IsCurrent(const Frame& frame, bool changed) const;
+  /// The radiance chain ran for `frame` (`valid`) or could not (then it is stale).
+  void SetCurrent(const Frame& frame, bool valid);
   void ReleaseGraphicsResources(vtkWindow* window);
 
   Volume3D& GetRadiance() { return this->Radiance; }
@@ -48,6 +54,7 @@ private:
   Volume3D Direct; // kept only when bouncing
   ComputeProgram Program;
   bool ProgramWithShadowMaps = false;
+  std::vector<double> Key; // the settings the radiance was computed with; empty: stale
   bool VoxelShadows = true;
 };
 

@@ -67,12 +67,8 @@ struct vtkVoxelGIPass::Internals
   voxelgi::StageClock Clock;
   voxelgi::Frame Frame;
 
-  std::vector<double> RadianceSettings; // what the radiance was last computed with
-  bool RadianceValid = false;
   bool Traced = false;
-  bool WarnedLights = false;
   bool WarnedUnlit = false;
-  bool WarnedInvalidLights = false;
   vtkWeakPointer<vtkOpenGLRenderWindow> Window; // the window whose context holds the resources
   unsigned long WindowObserver = 0;
   bool ContextChecked = false;
@@ -257,9 +253,8 @@ bool vtkVoxelGIPass::CheckContext(vtkRenderWindow* renWin)
   {
     return in.ContextOk;
   }
-  GLint major = 0, minor = 0;
-  glGetIntegerv(GL_MAJOR_VERSION, &major);
-  glGetIntegerv(GL_MINOR_VERSION, &minor);
+  int major = 0, minor = 0;
+  voxelgi::ContextVersion(major, minor);
   in.ContextChecked = true;
   in.ContextOk = major > 4 || (major == 4 && minor >= 3);
   in.HasConservativeRaster = voxelgi::HasExtension("GL_NV_conservative_raster");
@@ -382,34 +377,19 @@ bool vtkVoxelGIPass::UpdateVoxels(bool& changed)
 }
 
 //------------------------------------------------------------------------------
-bool vtkVoxelGIPass::GatherLights()
-{
-  Internals& in = *this->Internal;
-  int dropped = 0, invalid = 0;
-  const bool changed = in.Lights.Gather(in.Frame.Renderer, in.Frame.Grid, dropped, invalid);
-  if (invalid > 0 && !in.WarnedInvalidLights)
-  {
-    vtkWarningMacro(<< invalid << " light(s) with a negative or non-finite intensity or colour "
-                                   "are left out of the GI.");
-    in.WarnedInvalidLights = true;
-  }
-  if (dropped > 0 && !in.WarnedLights)
-  {
-    vtkWarningMacro(<< "Voxel GI uses the first " << voxelgi::LightBlock::MaxLights
-                    << " lights; " << dropped << " more are left out of the GI.");
-    in.WarnedLights = true;
-  }
-  in.Frame.LitScene = in.Lights.GetCount() > 0;
-  return changed;
-}
-
-//------------------------------------------------------------------------------
 bool vtkVoxelGIPass::UpdateRadiance(bool voxelsChanged, bool& changed)
 {
   Internals& in = *this->Internal;
-  const bool lightsChanged = this->GatherLights();
+  voxelgi::Frame& frame = in.Frame;
+  std::vector<std::string> warnings;
+  const bool lightsChanged = in.Lights.Gather(frame.Renderer, frame.Grid, warnings);
+  for (const std::string& warning : warnings)
+  {
+    vtkWarningMacro(<< warning);
+  }
+  frame.LitScene = in.Lights.GetCount() > 0;
   changed = false;
-  if (!in.Frame.LitScene && !in.Voxelize->HasEmission())
+  if (!frame.LitScene && !in.Voxelize->HasEmission())
   {
     if (!in.WarnedUnlit)
     {
@@ -417,24 +397,19 @@ bool vtkVoxelGIPass::UpdateRadiance(bool voxelsChanged, bool& changed)
                          "rendering without GI.");
       in.WarnedUnlit = true;
     }
-    in.RadianceValid = false;
+    in.Lighting.SetCurrent(frame, false);
     return false;
   }
   in.Lights.Bind();
-  in.GridBlock.Bind(in.Frame.Grid);
-  const voxelgi::Settings& c = in.Frame.Config;
-  const std::vector<double> settings{ static_cast<double>(c.LightOcclusion),
-    static_cast<double>(c.ShadowMapResolution), static_cast<double>(c.Bounces),
-    static_cast<double>(c.AnisotropicMipmaps), static_cast<double>(c.DiffuseConeCount),
-    c.DiffuseConeAperture, c.ConeStepFactor, c.MaxTraceDistance * in.Frame.Grid.Resolution };
-  if (!voxelsChanged && !lightsChanged && in.RadianceValid && settings == in.RadianceSettings)
+  in.GridBlock.Bind(frame.Grid);
+  if (in.Lighting.IsCurrent(frame, voxelsChanged || lightsChanged))
   {
     return true;
   }
   changed = true;
-  in.RadianceValid = this->LightAndBounce();
-  in.RadianceSettings = settings;
-  return in.RadianceValid;
+  const bool valid = this->LightAndBounce();
+  in.Lighting.SetCurrent(frame, valid);
+  return valid;
 }
 
 bool vtkVoxelGIPass::LightAndBounce()
@@ -576,7 +551,6 @@ void vtkVoxelGIPass::ReleaseGraphicsResources(vtkWindow* w)
   in.Debug.ReleaseGraphicsResources(w);
   in.Presenter.ReleaseGraphicsResources(w);
   in.Clock.ReleaseGraphicsResources();
-  in.RadianceValid = false;
   in.Traced = false;
   in.Scan.Reset();
   in.ContextChecked = false;

@@ -499,9 +499,8 @@ protected:
   /// Scan the scene and bring the voxels up to date (Voxelize stage); false if GI cannot
   /// run. `changed` tells whether any voxel was rewritten.
   bool UpdateVoxels(bool& changed);
-  /// Gather the lights into the light block; true when they changed.
-  bool GatherLights();
-  /// When voxels, lights or settings changed: LightVoxels, Mipmap, Bounce.
+  /// Gather the lights; when voxels, lights or settings changed: LightVoxels, Mipmap,
+  /// Bounce. False when GI cannot run (nothing lights the scene).
   bool UpdateRadiance(bool voxelsChanged, bool& changed);
   bool LightAndBounce();
   /// GBuffer, ConeTrace and Composite (unless `reuse`: nothing changed since the last traced
