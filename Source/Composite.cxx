@@ -45,6 +45,10 @@ void Composite::Run(const Frame& frame)
   p.Use(frame.Window);
   ScopedTextures inputs({ this->GBuffer.GetColor(), this->GBuffer.GetNormal(),
     this->GBuffer.GetDepth(), indirect, shadowed });
+  if (!(inputs.Complete()))
+  {
+    return;
+  }
   float gridFromNDC[16];
   GridFromNDC(frame.Renderer, frame.Grid, gridFromNDC);
   p.SetMat4Array("voxelFromNDC", 1, gridFromNDC);

@@ -96,6 +96,10 @@ void ConeTrace::Run(const Frame& frame)
     p, samplers, this->Lighting.GetRadiance(), this->Mipmap, 0.0f, this->Cones.StepFactor);
   ScopedTextures inputs(
     { this->GBuffer.GetNormal(), this->GBuffer.GetMaterial(), this->GBuffer.GetDepth() });
+  if (!(samplers.Complete() && inputs.Complete()))
+  {
+    return;
+  }
   this->SetUniforms(frame);
   BindImage2D(0, this->Indirect, GL_WRITE_ONLY, GL_RGBA16F);
   BindImage2D(1, this->Shadowed, GL_WRITE_ONLY, GL_RGBA16F);

@@ -56,6 +56,10 @@ void DebugView::Run(const Frame& frame)
   p.SetVec3Array("backgroundColor", 1,
     std::array<float, 3>{ { static_cast<float>(bg[0]), static_cast<float>(bg[1]),
       static_cast<float>(bg[2]) } }.data());
+  if (!(samplers.Complete()))
+  {
+    return;
+  }
   BindImage2D(0, this->Image, GL_WRITE_ONLY, GL_RGBA8);
   p.DispatchImage(frame.Width, frame.Height, 8);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);

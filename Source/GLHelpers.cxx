@@ -276,6 +276,10 @@ int SamplerBindings::Keep(int unit, unsigned int target)
     this->Units[this->Count] = unit;
     this->Targets[this->Count++] = target;
   }
+  else
+  {
+    this->Failed = true;
+  }
   return unit;
 }
 
@@ -553,6 +557,7 @@ ScopedTextures::ScopedTextures(std::initializer_list<vtkTextureObject*> textures
     {
       texture->Activate();
       this->Textures[this->Count++] = texture;
+      this->Failed = this->Failed || texture->GetTextureUnit() < 0;
     }
   }
 }

@@ -119,6 +119,9 @@ public:
 
   int Add(const Volume3D& volume);
   int Add(const ShadowMapArray& maps);
+  /// False when a unit could not be had (the window's units are all taken): a dispatch
+  /// would then sample whatever the program's stale sampler uniforms point at; skip it.
+  bool Complete() const { return !this->Failed; }
 
 private:
   int Keep(int unit, unsigned int target);
@@ -127,6 +130,7 @@ private:
   int Units[16];
   unsigned int Targets[16];
   int Count = 0;
+  bool Failed = false;
 };
 
 /// A buffer object, bound as shader storage or uniform buffer.
@@ -233,12 +237,15 @@ class ScopedTextures
 public:
   explicit ScopedTextures(std::initializer_list<vtkTextureObject*> textures);
   ~ScopedTextures();
+  /// False when a texture got no unit (see SamplerBindings::Complete).
+  bool Complete() const { return !this->Failed; }
   ScopedTextures(const ScopedTextures&) = delete;
   ScopedTextures& operator=(const ScopedTextures&) = delete;
 
 private:
   vtkTextureObject* Textures[8];
   int Count = 0;
+  bool Failed = false;
 };
 
 /// A full-screen pass of `fragment`: built on first use, made current afterwards. Null when

@@ -70,6 +70,10 @@ void LightVoxels::Run(const Frame& frame)
     p.SetIntArray("shadowLayers", ShadowMaps::MaxLights, this->Shadows.GetLayers());
     p.SetMat4Array("shadowMatrices", ShadowMaps::MaxLights, this->Shadows.GetMatrices());
   }
+  if (!(samplers.Complete()))
+  {
+    return;
+  }
   const bool direct = this->Direct.IsAllocated();
   p.SetInt("writeDirect", direct ? 1 : 0);
   this->Radiance.BindImage(0, GL_WRITE_ONLY);

@@ -27,6 +27,10 @@ void Present::Run(const Frame& frame, vtkTextureObject* image, vtkTextureObject*
   }
   // Without a depth image, depth writes are masked: the shader's depth output is discarded.
   ScopedTextures inputs({ image, depth });
+  if (!(inputs.Complete()))
+  {
+    return;
+  }
   program->SetUniformi("compositeColor", image->GetTextureUnit());
   program->SetUniformi("gbufferDepth", (depth ? depth : image)->GetTextureUnit());
   vtkOpenGLState* ostate = frame.Window->GetState();

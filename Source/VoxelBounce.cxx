@@ -41,6 +41,10 @@ void VoxelBounce::Bounce(const Frame& frame)
   p.SetInt("voxelAlbedo", samplers.Add(this->Voxels.GetAlbedo()));
   p.SetInt("voxelNormal", samplers.Add(this->Voxels.GetNormal()));
   p.SetInt("voxelDirect", samplers.Add(this->Lighting.GetDirect()));
+  if (!(samplers.Complete()))
+  {
+    return;
+  }
   p.SetVec3Array("coneDirections", this->Cones.Count, this->Cones.Directions);
   p.SetInt("coneCount", this->Cones.Count);
   p.SetFloat("coneTanHalf", this->Cones.TanHalf);

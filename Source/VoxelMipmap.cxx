@@ -75,6 +75,10 @@ void VoxelMipmap::Build(vtkOpenGLRenderWindow* renWin)
   {
     units[d] = samplers.Add(this->Directional[d]);
   }
+  if (!samplers.Complete())
+  {
+    return;
+  }
   this->Program.Use(renWin);
   this->Program.SetInt("voxelRadiance", radianceUnit);
   for (int d = 0; d < 6; ++d)

@@ -212,6 +212,39 @@ int ScaledBox(double scale, double offset)
   return EXIT_SUCCESS;
 }
 
+// The composite of the pass's last frame.
+vtkSmartPointer<vtkFloatArray> Composite(vtkVoxelGIPass* gi)
+{
+  auto image = vtkSmartPointer<vtkFloatArray>::New();
+  return gi->GetFloatImage(vtkVoxelGIPass::IMAGE_COMPOSITE, image) ? image : nullptr;
+}
+
+// Largest difference between two images of the same size (infinite if either is missing).
+double MaxDifference(vtkFloatArray* a, vtkFloatArray* b)
+{
+  if (!a || !b || a->GetNumberOfValues() != b->GetNumberOfValues())
+  {
+    return 1e30;
+  }
+  double d = 0.0;
+  for (vtkIdType i = 0; i < a->GetNumberOfValues(); ++i)
+  {
+    d = std::max(d, static_cast<double>(std::abs(a->GetValue(i) - b->GetValue(i))));
+  }
+  return d;
+}
+
+// Renders `s` once more, fully recomputed, and compares with `before`.
+bool Unchanged(Scene& s, vtkFloatArray* before, const char* after)
+{
+  s.GI->Invalidate();
+  s.Window->Render();
+  const double d = MaxDifference(before, Composite(s.GI));
+  std::cout << "after " << after << ": GI active " << s.GI->GetGIActive()
+            << ", largest difference " << d << std::endl;
+  return s.GI->GetGIActive() && d == 0.0;
+}
+
 const std::map<std::string, std::function<int()>>& Cases()
 {
   static const std::map<std::string, std::function<int()>> cases = {
@@ -534,6 +567,57 @@ const std::map<std::string, std::function<int()>>& Cases()
         VOXELGI_CHECK(s.GI->GetGIActive() && second->GetGIActive() && other.GI->GetGIActive(),
           "a pass did not run");
         VOXELGI_CHECK(Bounded(s.GI) && Bounded(second) && Bounded(other.GI), "non-finite values");
+        return EXIT_SUCCESS;
+      } },
+    { "CleanupOfOneWindowKeepsAnother",
+      [] {
+        // GL objects must be freed on their own context, never on whichever is current.
+        Scene a, b;
+        vtkVoxelGIScenes::AddCornellBox(a.Renderer);
+        vtkVoxelGIScenes::AddCornellBox(b.Renderer);
+        a.Render();
+        b.Render();
+        vtkSmartPointer<vtkFloatArray> before = Composite(b.GI);
+        b.Window->MakeCurrent();
+        a.Window->RemoveRenderer(a.Renderer);
+        VOXELGI_CHECK(Unchanged(b, before, "removing A's renderer"), "window B lost its GI");
+        vtkNew<vtkRenderer> renderer;
+        vtkVoxelGIScenes::AddCornellBox(renderer);
+        a.Window->AddRenderer(renderer);
+        auto pass = vtkSmartPointer<vtkVoxelGIPass>::New();
+        renderer->SetPass(pass);
+        renderer->ResetCamera();
+        a.Window->Render();
+        VOXELGI_CHECK(pass->GetGIActive(), "the third pass did not run");
+        b.Window->MakeCurrent();
+        renderer->SetPass(nullptr);
+        pass = nullptr; // destroyed while window B is current
+        VOXELGI_CHECK(Unchanged(b, before, "destroying a pass of window A"),
+          "window B lost its GI");
+        return EXIT_SUCCESS;
+      } },
+    { "OnePassTwoWindows",
+      [] {
+        // One pass on two windows: each frame must equal what a pass of its own renders.
+        Scene one, two;
+        vtkVoxelGIScenes::AddCornellBox(one.Renderer);
+        vtkVoxelGIScenes::AddCornellBox(two.Renderer);
+        two.Window->SetSize(64, 96);
+        one.Render();
+        two.Render();
+        vtkSmartPointer<vtkFloatArray> expected[2] = { Composite(one.GI), Composite(two.GI) };
+        vtkNew<vtkVoxelGIPass> shared;
+        shared->SetVoxelResolution(32);
+        one.Renderer->SetPass(shared);
+        two.Renderer->SetPass(shared);
+        for (int frame = 0; frame < 4; ++frame)
+        {
+          Scene& s = frame % 2 == 0 ? one : two;
+          s.Window->Render();
+          const double d = MaxDifference(expected[frame % 2], Composite(shared));
+          std::cout << "frame " << frame << ": largest difference " << d << std::endl;
+          VOXELGI_CHECK(shared->GetGIActive() && d == 0.0, "a frame of the shared pass differs");
+        }
         return EXIT_SUCCESS;
       } },
     { "ManyActorsAndLights",
