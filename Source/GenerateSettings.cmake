@@ -32,6 +32,7 @@ set(content "// Generated from VoxelGISettings.json by GenerateSettings.cmake. D
 
 #include \"VoxelGrid.h\" // for voxelgi::ClampResolution
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -93,11 +94,29 @@ int vtkVoxelGISettings::NearestPowerOfTwo(int i, int value)
     value, static_cast<int>(GetMinimum(i)), static_cast<int>(GetMaximum(i)));
 }
 
+int vtkVoxelGISettings::GetIndex(const char* setting)
+{
+  for (int i = 0; setting && i < GetNumberOfSettings(); ++i)
+  {
+    if (std::string(Table[i].Name) == setting)
+    {
+      return i;
+    }
+  }
+  return -1;
+}
+
 double vtkVoxelGISettings::GetValue(vtkVoxelGIPass* pass, const char* setting)
 {
   const std::string name = setting ? setting : \"\";
   if (!pass)
   {
+    return 0.0;
+  }
+  if (GetIndex(setting) < 0)
+  {
+    vtkGenericWarningMacro(<< \"vtkVoxelGISettings::GetValue: no setting named \\\"\" << name
+                           << \"\\\"; returning 0.\");
     return 0.0;
   }
 ${getters}  return 0.0;
@@ -106,10 +125,25 @@ ${getters}  return 0.0;
 bool vtkVoxelGISettings::SetValue(vtkVoxelGIPass* pass, const char* setting, double value)
 {
   const std::string name = setting ? setting : \"\";
+  const int i = GetIndex(setting);
   if (!pass)
   {
     return false;
   }
+  if (i < 0)
+  {
+    vtkGenericWarningMacro(<< \"vtkVoxelGISettings::SetValue: no setting named \\\"\" << name
+                           << \"\\\"; nothing was set.\");
+    return false;
+  }
+  if (std::isnan(value))
+  {
+    vtkGenericWarningMacro(<< \"vtkVoxelGISettings::SetValue: \" << name
+                           << \" cannot be NaN; it stays \" << GetValue(pass, setting) << \".\");
+    return false;
+  }
+  // Clamped in double first: an integer conversion of 1e30, Inf or 3e9 would wrap.
+  value = std::min(std::max(value, Table[i].Minimum), Table[i].Maximum);
 ${setters}  return false;
 }
 ")

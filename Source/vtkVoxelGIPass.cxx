@@ -69,6 +69,7 @@ struct vtkVoxelGIPass::Internals
 
   bool Traced = false;
   bool WarnedUnlit = false;
+  bool WarnedNoDelegate = false;
   vtkWeakPointer<vtkOpenGLRenderWindow> Window; // the window whose context holds the resources
   unsigned long WindowObserver = 0;
   bool ContextChecked = false;
@@ -297,6 +298,17 @@ void vtkVoxelGIPass::Render(const vtkRenderState* s)
   auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
   bool voxelsChanged = false;
   bool radianceChanged = false;
+  if (!this->DelegatePass)
+  {
+    if (!in.WarnedNoDelegate)
+    {
+      vtkErrorMacro(<< "No delegate pass: nothing renders VTK's image, so neither VTK's image "
+                       "nor GI is drawn. Set one (e.g. a vtkRenderStepsPass).");
+      in.WarnedNoDelegate = true;
+    }
+    return;
+  }
+  in.WarnedNoDelegate = false;
   // Hardware picking renders through the pass too: it must see VTK's plain render steps.
   if (this->Enabled && renWin && !renderer->GetSelector() && this->CheckContext(renWin))
   {

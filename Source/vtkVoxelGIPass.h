@@ -72,7 +72,8 @@ public:
 
   ///@{
   /**
-   * The pass that renders VTK's own image (default: a vtkRenderStepsPass).
+   * The pass that renders VTK's own image (default: a vtkRenderStepsPass). Without one
+   * nothing is drawn, and the pass says so once.
    */
   virtual void SetDelegatePass(vtkRenderPass* delegatePass);
   vtkGetObjectMacro(DelegatePass, vtkRenderPass);

@@ -48,8 +48,15 @@ public:
   static int NearestPowerOfTwo(int i, int value);
 
   /**
-   * Read or write a setting of `pass` by name (integers and booleans rounded); the pass
-   * clamps as its setters do. SetValue returns false for an unknown name.
+   * Setting `name`'s index in the table, -1 for an unknown name.
+   */
+  static int GetIndex(const char* name);
+  /**
+   * Read or write a setting of `pass` by name. SetValue clamps to the setting's range in
+   * double precision, then rounds integers and booleans, and the pass's setter applies its
+   * own rules (powers of two); it returns false, with a warning that names the setting, for
+   * an unknown name or NaN (the setting keeps its value). GetValue warns about an unknown
+   * name and returns 0.
    */
   static double GetValue(vtkVoxelGIPass* pass, const char* name);
   static bool SetValue(vtkVoxelGIPass* pass, const char* name, double value);

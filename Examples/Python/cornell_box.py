@@ -1,6 +1,9 @@
 """The built-in Cornell box with voxel global illumination, written to a PNG.
 
-    python3 cornell_box.py [output.png]
+    PYTHONPATH=build/lib/python3/dist-packages /usr/bin/python3 Examples/Python/cornell_box.py [output.png]
+
+(from the repository root after the set-up; VTK's Python is Debian's /usr/bin/python3,
+which may not be the python3 first on PATH)
 """
 import sys
 

@@ -2,8 +2,13 @@
     g  GI on/off            o  ambient occlusion on/off     s  specular cone on/off
     v  next debug view      b  bounces 0/1/2                q  quit
 
-    python3 interactive.py              # opens a window
-    python3 interactive.py --snapshot out.png   # renders once off screen, writes the image
+    PYTHONPATH=build/lib/python3/dist-packages /usr/bin/python3 Examples/Python/interactive.py
+        opens a window;
+    ... interactive.py --snapshot out.png
+        renders once off screen and writes the image
+
+(from the repository root after the set-up; VTK's Python is Debian's /usr/bin/python3,
+which may not be the python3 first on PATH)
 """
 import sys
 

@@ -2,7 +2,10 @@
 wavelet source, coloured by elevation through a lookup table, standing in a simple room
 (floor and two walls) lit by one positional light. Written to a PNG.
 
-    python3 wavelet_isosurface.py [output.png]
+    PYTHONPATH=build/lib/python3/dist-packages /usr/bin/python3 Examples/Python/wavelet_isosurface.py [output.png]
+
+(from the repository root after the set-up; VTK's Python is Debian's /usr/bin/python3,
+which may not be the python3 first on PATH)
 """
 import sys
 

@@ -620,6 +620,19 @@ const std::map<std::string, std::function<int()>>& Cases()
         }
         return EXIT_SUCCESS;
       } },
+    { "NoDelegatePass",
+      [] {
+        Scene s;
+        vtkVoxelGIScenes::AddCornellBox(s.Renderer);
+        s.GI->SetDelegatePass(nullptr);
+        s.Render();
+        s.Render();
+        VOXELGI_CHECK(!s.GI->GetGIActive(), "GI reported active without a delegate");
+        VOXELGI_CHECK(s.Log.Has("No delegate pass"), "no message: " << s.Log.Text);
+        VOXELGI_CHECK(s.Log.Text.find("No delegate pass") == s.Log.Text.rfind("No delegate pass"),
+          "the message repeats every frame");
+        return EXIT_SUCCESS;
+      } },
     { "ManyActorsAndLights",
       [] {
         Scene s;

@@ -8,7 +8,9 @@ import sys
 
 from vtkmodules.vtkRenderingOpenGL2 import vtkOpenGLRenderPass
 
-from voxelgi import vtkVoxelGIPass
+from vtkmodules.vtkCommonCore import vtkObject
+
+from voxelgi import vtkVoxelGIPass, vtkVoxelGISettings
 
 failures = []
 
@@ -20,6 +22,33 @@ def check(condition, message):
 
 def close(a, b):
     return abs(a - b) <= 1e-9 * max(1.0, abs(b))
+
+
+def check_set_value():
+    """vtkVoxelGISettings.SetValue clamps in double before converting, refuses NaN and unknown
+    names (keeping the setting), and GetValue returns 0 for an unknown name."""
+    gi = vtkVoxelGIPass()
+    vtkObject.GlobalWarningDisplayOff()  # the refusals warn; what they do is checked here
+    try:
+        cases = [("Enabled", 1e30, 1), ("Enabled", -1, 0), ("Enabled", 2, 1),
+                 ("Bounces", 3e9, 10), ("Bounces", -2147483649, 0), ("Bounces", float("inf"), 10),
+                 ("Bounces", float("-inf"), 0), ("DiffuseConeCount", 1e30, 16),
+                 ("UpdatePolicy", 1e9, 3), ("VoxelResolution", 1e30, 512),
+                 ("AmbientOcclusionStrength", float("inf"), 1.0)]
+        for name, value, expected in cases:
+            ok = vtkVoxelGISettings.SetValue(gi, name, value)
+            got = vtkVoxelGISettings.GetValue(gi, name)
+            check(ok and close(got, expected), "SetValue(%s, %r) gives %r, expected %r" % (name, value, got, expected))
+        before = gi.GetAmbientOcclusionStrength()
+        check(not vtkVoxelGISettings.SetValue(gi, "AmbientOcclusionStrength", float("nan")),
+              "SetValue accepts NaN")
+        check(gi.GetAmbientOcclusionStrength() == before, "NaN through SetValue changed the setting")
+        check(not vtkVoxelGISettings.SetValue(gi, "NoSuchSetting", 1.0), "SetValue accepts an unknown name")
+        check(vtkVoxelGISettings.GetValue(gi, "NoSuchSetting") == 0.0, "GetValue of an unknown name is not 0")
+        check(vtkVoxelGISettings.GetIndex("Bounces") >= 0 and vtkVoxelGISettings.GetIndex("Nope") == -1,
+              "GetIndex")
+    finally:
+        vtkObject.GlobalWarningDisplayOn()
 
 
 def main(table_path):
@@ -64,6 +93,8 @@ def main(table_path):
             name = attr[3:]
             if hasattr(vtkVoxelGIPass, "Get" + name) and name not in ("DelegatePass",):
                 check(name in table_names, "%s is a setting of the pass but not in the table" % name)
+
+    check_set_value()
 
     for failure in failures:
         print("FAILED:", failure)
