@@ -40,7 +40,28 @@
 #include "vtkOpenGLRenderPass.h"
 #include "vtkRenderingVoxelGIModule.h" // for export macro
 
+#include <cmath>  // for std::isnan
 #include <memory> // for std::unique_ptr
+
+// vtkSetClampMacro that refuses NaN (which passes any clamp) with a message naming the
+// setting, keeping its value.
+#define vtkVoxelGISetClampMacro(name, type, min, max)                                          \
+  virtual void Set##name(type _arg)                                                            \
+  {                                                                                            \
+    if (std::isnan(_arg))                                                                      \
+    {                                                                                          \
+      vtkWarningMacro(<< #name " cannot be NaN; it stays " << this->name << ".");             \
+      return;                                                                                  \
+    }                                                                                          \
+    const type clamped = _arg < min ? min : (_arg > max ? max : _arg);                         \
+    if (this->name != clamped)                                                                 \
+    {                                                                                          \
+      this->name = clamped;                                                                    \
+      this->Modified();                                                                        \
+    }                                                                                          \
+  }                                                                                            \
+  virtual type Get##name##MinValue() { return min; }                                           \
+  virtual type Get##name##MaxValue() { return max; }
 
 class vtkActor;
 class vtkFloatArray;
@@ -104,7 +125,7 @@ public:
    * Space left around the scene in the voxel grid, as a fraction of the scene's largest
    * extent on each side, in [0, 0.5]. Default: 0.05.
    */
-  vtkSetClampMacro(GridPadding, double, 0.0, 0.5);
+  vtkVoxelGISetClampMacro(GridPadding, double, 0.0, 0.5);
   vtkGetMacro(GridPadding, double);
   ///@}
 
@@ -202,7 +223,7 @@ public:
   /**
    * Full aperture of the diffuse cones in degrees, in [5, 120]. Default: 60.
    */
-  vtkSetClampMacro(DiffuseConeAperture, double, 5.0, 120.0);
+  vtkVoxelGISetClampMacro(DiffuseConeAperture, double, 5.0, 120.0);
   vtkGetMacro(DiffuseConeAperture, double);
   ///@}
 
@@ -211,7 +232,7 @@ public:
    * Cone step length as a fraction of the cone's diameter, in [0.05, 2]: smaller is finer
    * and slower (opacity is corrected for the step). Default: 0.75.
    */
-  vtkSetClampMacro(ConeStepFactor, double, 0.05, 2.0);
+  vtkVoxelGISetClampMacro(ConeStepFactor, double, 0.05, 2.0);
   vtkGetMacro(ConeStepFactor, double);
   ///@}
 
@@ -220,7 +241,7 @@ public:
    * Longest cone, as a fraction of the voxel grid's size, in [0, 2]. 0 traces nothing.
    * Default: 1.
    */
-  vtkSetClampMacro(MaxTraceDistance, double, 0.0, 2.0);
+  vtkVoxelGISetClampMacro(MaxTraceDistance, double, 0.0, 2.0);
   vtkGetMacro(MaxTraceDistance, double);
   ///@}
 
@@ -229,7 +250,7 @@ public:
    * How far cones start from the surface, in voxels along the normal, in [0, 8]: keeps a
    * surface from lighting itself through its own voxels. Default: 1.5.
    */
-  vtkSetClampMacro(ConeStartOffset, double, 0.0, 8.0);
+  vtkVoxelGISetClampMacro(ConeStartOffset, double, 0.0, 8.0);
   vtkGetMacro(ConeStartOffset, double);
   ///@}
 
@@ -239,7 +260,7 @@ public:
    * the traced light is upsampled edge-aware (weighted by position and normal similarity)
    * when composited: 0.5 traces a quarter of the pixels. Default: 1.
    */
-  vtkSetClampMacro(TraceResolution, double, 0.25, 1.0);
+  vtkVoxelGISetClampMacro(TraceResolution, double, 0.25, 1.0);
   vtkGetMacro(TraceResolution, double);
   ///@}
 
@@ -247,7 +268,7 @@ public:
   /**
    * Scale of the indirect diffuse light, in [0, 10]. Default: 1.
    */
-  vtkSetClampMacro(IndirectIntensity, double, 0.0, 10.0);
+  vtkVoxelGISetClampMacro(IndirectIntensity, double, 0.0, 10.0);
   vtkGetMacro(IndirectIntensity, double);
   ///@}
 
@@ -265,7 +286,7 @@ public:
   /**
    * Scale of the indirect specular light, in [0, 10]. Default: 1.
    */
-  vtkSetClampMacro(SpecularIntensity, double, 0.0, 10.0);
+  vtkVoxelGISetClampMacro(SpecularIntensity, double, 0.0, 10.0);
   vtkGetMacro(SpecularIntensity, double);
   ///@}
 
@@ -274,7 +295,7 @@ public:
    * How much the cone-traced ambient occlusion darkens VTK's shading, in [0, 1]
    * (0: AO off). Default: 0.5.
    */
-  vtkSetClampMacro(AmbientOcclusionStrength, double, 0.0, 1.0);
+  vtkVoxelGISetClampMacro(AmbientOcclusionStrength, double, 0.0, 1.0);
   vtkGetMacro(AmbientOcclusionStrength, double);
   ///@}
 
@@ -283,7 +304,7 @@ public:
    * Falloff of occluders' weight with distance in the AO, per voxel, in [0, 10]: an
    * occluder t voxels away counts 1 / (1 + falloff t). Default: 0.05.
    */
-  vtkSetClampMacro(AmbientOcclusionFalloff, double, 0.0, 10.0);
+  vtkVoxelGISetClampMacro(AmbientOcclusionFalloff, double, 0.0, 10.0);
   vtkGetMacro(AmbientOcclusionFalloff, double);
   ///@}
 
@@ -301,7 +322,7 @@ public:
   /**
    * Full aperture of the shadow cones in degrees, in [0.5, 60]: wider is softer. Default: 6.
    */
-  vtkSetClampMacro(ShadowConeAperture, double, 0.5, 60.0);
+  vtkVoxelGISetClampMacro(ShadowConeAperture, double, 0.5, 60.0);
   vtkGetMacro(ShadowConeAperture, double);
   ///@}
 

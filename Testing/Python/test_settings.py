@@ -24,6 +24,9 @@ def close(a, b):
     return abs(a - b) <= 1e-9 * max(1.0, abs(b))
 
 
+TABLE = []
+
+
 def check_set_value():
     """vtkVoxelGISettings.SetValue clamps in double before converting, refuses NaN and unknown
     names (keeping the setting), and GetValue returns 0 for an unknown name."""
@@ -43,6 +46,11 @@ def check_set_value():
         check(not vtkVoxelGISettings.SetValue(gi, "AmbientOcclusionStrength", float("nan")),
               "SetValue accepts NaN")
         check(gi.GetAmbientOcclusionStrength() == before, "NaN through SetValue changed the setting")
+        for s in [s for s in TABLE if s["type"] == "double"]:
+            get, put = getattr(gi, "Get" + s["name"]), getattr(gi, "Set" + s["name"])
+            before = get()
+            put(float("nan"))
+            check(get() == before, "Set%s(NaN) changed the setting to %r" % (s["name"], get()))
         check(not vtkVoxelGISettings.SetValue(gi, "NoSuchSetting", 1.0), "SetValue accepts an unknown name")
         check(vtkVoxelGISettings.GetValue(gi, "NoSuchSetting") == 0.0, "GetValue of an unknown name is not 0")
         check(vtkVoxelGISettings.GetIndex("Bounces") >= 0 and vtkVoxelGISettings.GetIndex("Nope") == -1,
@@ -54,6 +62,7 @@ def check_set_value():
 def main(table_path):
     with open(table_path) as f:
         table = json.load(f)["settings"]
+    TABLE.extend(table)
 
     for s in table:
         name = s["name"]

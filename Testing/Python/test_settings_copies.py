@@ -90,7 +90,8 @@ class Header:
     def setter(self, name):
         """The setting's setter declaration: (match of a clamp macro or None, its offset),
         or None when the header declares no setter."""
-        clamp = re.search(r"\bvtkSetClampMacro\(\s*%s\s*,\s*([^,]+?)\s*,\s*([^,]+?)\s*,"
+        # vtkVoxelGISetClampMacro: vtkSetClampMacro that also refuses NaN.
+        clamp = re.search(r"\b(?:vtkSetClampMacro|vtkVoxelGISetClampMacro)\(\s*%s\s*,\s*([^,]+?)\s*,\s*([^,]+?)\s*,"
                           r"\s*([^)]+?)\s*\)" % name, self.code)
         if clamp:
             return clamp, clamp.start()
