@@ -23,6 +23,7 @@
 #include <chrono>
 #include <cmath>
 #include <sstream>
+#include <map>
 #include <unordered_map>
 
 namespace voxelgi
@@ -96,20 +97,36 @@ std::string NonFinitePoints(vtkActor* actor)
   return text.str();
 }
 
-/// Why a visible prop with bounds is not voxelized: 0 when it is, 1 left to VTK, 2 skipped.
-int LeftOut(vtkProp* prop)
+/// Why a visible prop with bounds is not voxelized (empty: it is): its class, and the reason.
+std::string LeftOutReason(vtkProp* prop)
 {
   vtkActor* actor = vtkActor::SafeDownCast(prop);
   if (!actor)
   {
-    return prop->IsA("vtkVolume") ? 1 : 2;
+    return std::string(prop->GetClassName()) +
+      (prop->IsA("vtkVolume") ? " (a volume)" : " (not an actor)");
   }
-  if (!vtkOpenGLPolyDataMapper::SafeDownCast(actor->GetMapper()) ||
-    actor->GetProperty()->GetRepresentation() != VTK_SURFACE || !actor->HasOpaqueGeometry())
+  vtkMapper* mapper = actor->GetMapper();
+  if (!vtkOpenGLPolyDataMapper::SafeDownCast(mapper))
   {
-    return 1;
+    return std::string(prop->GetClassName()) + " with a " +
+      (mapper ? mapper->GetClassName() : "null mapper") + " (not a polydata mapper)";
   }
-  return 0;
+  // Imposter mappers draw points and lines as shaded spheres and cylinders: no triangles.
+  if (mapper->IsA("vtkOpenGLSphereMapper") || mapper->IsA("vtkOpenGLStickMapper"))
+  {
+    return std::string(prop->GetClassName()) + " with a " + mapper->GetClassName() +
+      " (imposter spheres or sticks, no triangles)";
+  }
+  if (actor->GetProperty()->GetRepresentation() != VTK_SURFACE)
+  {
+    return std::string(prop->GetClassName()) + " (points or wireframe representation)";
+  }
+  if (!actor->HasOpaqueGeometry())
+  {
+    return std::string(prop->GetClassName()) + " (translucent)";
+  }
+  return std::string();
 }
 
 void Merge(double bounds[6], const double* b, bool first)
@@ -161,7 +178,7 @@ bool SceneScan::Collect(vtkRenderer* renderer, std::vector<ActorRecord>& records
     }
   }
   vtkMath::UninitializeBounds(bounds);
-  std::size_t leftOut = 0; // visible 3D props VTK renders without GI
+  std::map<std::string, int> leftOut; // visible 3D props VTK renders without GI, by reason
   bool anySpecular = false;
   vtkPropCollection* props = renderer->GetViewProps();
   vtkCollectionSimpleIterator it;
@@ -175,10 +192,11 @@ bool SceneScan::Collect(vtkRenderer* renderer, std::vector<ActorRecord>& records
     {
       continue;
     }
-    const int reason = LeftOut(prop);
-    if (reason != 0)
+    const std::string reason = LeftOutReason(prop);
+    if (!reason.empty())
     {
-      leftOut += reason == 1 ? 1 : 0;
+      // 2D props (text, legends, scalar bars) have no bounds and never get here.
+      ++leftOut[reason];
       continue;
     }
     if (!std::all_of(b, b + 6, [](double v) { return std::isfinite(v); }))
@@ -209,14 +227,18 @@ bool SceneScan::Collect(vtkRenderer* renderer, std::vector<ActorRecord>& records
     anySpecular = anySpecular || actor->GetProperty()->GetSpecular() > 0.0;
     records.push_back(record);
   }
-  if (leftOut > this->WarnedLeftOut)
+  // Said once for each new kind of prop left out.
+  std::ostringstream text;
+  for (const auto& kind : leftOut)
   {
-    std::ostringstream text;
-    text << leftOut
-         << " visible props (translucent, volume, points or wireframe) are rendered by VTK "
-            "without voxel GI.";
-    warnings.push_back(text.str());
-    this->WarnedLeftOut = leftOut;
+    if (this->WarnedLeftOut.insert(kind.first).second)
+    {
+      text << (text.tellp() > 0 ? "; " : "") << kind.second << " x " << kind.first;
+    }
+  }
+  if (text.tellp() > 0)
+  {
+    warnings.push_back("Rendered by VTK without voxel GI: " + text.str() + ".");
   }
   this->AnySpecular = anySpecular;
   return !records.empty();

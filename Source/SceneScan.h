@@ -17,6 +17,7 @@
 
 #include <array>
 #include <cstddef>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -124,7 +125,7 @@ private:
   bool InvalidateRequested = false;
   int FramesSinceUpdate = 0;
   bool AnySpecular = false;
-  std::size_t WarnedLeftOut = 0;
+  std::set<std::string> WarnedLeftOut; // kinds of props left out that were reported
   double Milliseconds = 0.0;
   std::vector<unsigned long long> FrameKey;
 };

@@ -277,7 +277,7 @@ const std::map<std::string, std::function<int()>>& Cases()
         wire->GetProperty()->SetRepresentationToWireframe();
         s.Render();
         // the line/vertex actor has no area; the wireframe box is left to VTK with a notice
-        VOXELGI_CHECK(s.Log.Has("rendered by VTK without voxel GI"), "no notice: " << s.Log.Text);
+        VOXELGI_CHECK(s.Log.Has("Rendered by VTK without voxel GI"), "no notice: " << s.Log.Text);
         VOXELGI_CHECK(Bounded(s.GI), "non-finite values");
         return EXIT_SUCCESS;
       } },

@@ -6,6 +6,7 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkGlyph3DMapper.h"
 #include "vtkNew.h"
 #include "vtkOpenGLPolyDataMapper.h"
 #include "vtkPoints.h"
@@ -217,9 +218,26 @@ TEST_F(ScanFixture, TranslucentAndWireframeAreLeftOutWithOneNotice)
   ASSERT_TRUE(this->Next());
   EXPECT_EQ(this->Scan.GetRecords().size(), 1u);
   ASSERT_EQ(this->Messages.Warnings.size(), 1u);
-  EXPECT_EQ(this->Messages.Warnings[0].rfind("2 visible props", 0), 0u);
+  EXPECT_EQ(this->Messages.Warnings[0],
+    "Rendered by VTK without voxel GI: 1 x vtkOpenGLActor (points or wireframe representation); "
+    "1 x vtkOpenGLActor (translucent).");
   ASSERT_TRUE(this->Next());
   EXPECT_TRUE(this->Messages.Warnings.empty()); // said once
+  AddSphere(this->Renderer, 6.0)->GetProperty()->SetOpacity(0.2);
+  ASSERT_TRUE(this->Next());
+  EXPECT_TRUE(this->Messages.Warnings.empty()); // one more of a kind already reported
+  vtkNew<vtkSphereSource> source;
+  vtkNew<vtkGlyph3DMapper> glyphs;
+  glyphs->SetInputConnection(source->GetOutputPort());
+  glyphs->SetSourceConnection(source->GetOutputPort());
+  vtkNew<vtkActor> glyphActor;
+  glyphActor->SetMapper(glyphs);
+  this->Renderer->AddActor(glyphActor);
+  ASSERT_TRUE(this->Next());
+  ASSERT_EQ(this->Messages.Warnings.size(), 1u);
+  EXPECT_NE(this->Messages.Warnings[0].find("with a vtkOpenGLGlyph3DMapper (not a polydata mapper)"),
+    std::string::npos)
+    << this->Messages.Warnings[0];
 }
 
 TEST_F(ScanFixture, NonFinitePointsAreReported)
