@@ -27,7 +27,7 @@ void main()
   voxelNormalX[i] = 0u;
   voxelNormalY[i] = 0u;
   voxelNormalZ[i] = 0u;
-#if VOXEL_CHANNELS > 7
+#if VOXEL_CHANNELS > VOXELGI_BASE_CHANNELS
   voxelEmissionR[i] = 0u;
   voxelEmissionG[i] = 0u;
   voxelEmissionB[i] = 0u;

@@ -13,7 +13,7 @@ layout(std430, binding = 3) buffer VoxelAlbedoBBuffer { uint voxelAlbedoB[]; };
 layout(std430, binding = 4) buffer VoxelNormalXBuffer { uint voxelNormalX[]; };
 layout(std430, binding = 5) buffer VoxelNormalYBuffer { uint voxelNormalY[]; };
 layout(std430, binding = 6) buffer VoxelNormalZBuffer { uint voxelNormalZ[]; };
-#if VOXEL_CHANNELS > 7
+#if VOXEL_CHANNELS > VOXELGI_BASE_CHANNELS
 layout(std430, binding = 7) buffer VoxelEmissionRBuffer { uint voxelEmissionR[]; };
 layout(std430, binding = 8) buffer VoxelEmissionGBuffer { uint voxelEmissionG[]; };
 layout(std430, binding = 9) buffer VoxelEmissionBBuffer { uint voxelEmissionB[]; };

@@ -6,7 +6,7 @@ layout(local_size_x = VOXELGI_LOCAL_SIZE, local_size_y = VOXELGI_LOCAL_SIZE, loc
 
 layout(rgba8, binding = 1) uniform writeonly image3D voxelAlbedo;
 layout(rgba8, binding = 2) uniform writeonly image3D voxelNormal;
-#if VOXEL_CHANNELS > 7
+#if VOXEL_CHANNELS > VOXELGI_BASE_CHANNELS
 layout(rgba16f, binding = 3) uniform writeonly image3D voxelEmission;
 uniform float emissionScale;
 #endif
@@ -31,13 +31,13 @@ void main()
     vec3 m = voxelMean(voxelNormalX[i], voxelNormalY[i], voxelNormalZ[i], n) * 2.0 - 1.0;
     float len = length(m);
     normal = vec4((len > 1e-3 ? m / len : vec3(0.0)) * 0.5 + 0.5, 1.0);
-#if VOXEL_CHANNELS > 7
+#if VOXEL_CHANNELS > VOXELGI_BASE_CHANNELS
     emission = min(voxelMean(voxelEmissionR[i], voxelEmissionG[i], voxelEmissionB[i], n) * emissionScale, vec3(VOXELGI_HALF_MAX));
 #endif
   }
   imageStore(voxelAlbedo, v, albedo);
   imageStore(voxelNormal, v, normal);
-#if VOXEL_CHANNELS > 7
+#if VOXEL_CHANNELS > VOXELGI_BASE_CHANNELS
   imageStore(voxelEmission, v, vec4(emission, 1.0));
 #endif
 }

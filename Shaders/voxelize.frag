@@ -47,7 +47,7 @@ void voxelStore(ivec3 v, vec4 color)
   atomicAdd(voxelNormalX[i], voxelQuantize(n.x));
   atomicAdd(voxelNormalY[i], voxelQuantize(n.y));
   atomicAdd(voxelNormalZ[i], voxelQuantize(n.z));
-#if VOXEL_CHANNELS > 7
+#if VOXEL_CHANNELS > VOXELGI_BASE_CHANNELS
   atomicAdd(voxelEmissionR[i], voxelQuantize(voxelEmission.r));
   atomicAdd(voxelEmissionG[i], voxelQuantize(voxelEmission.g));
   atomicAdd(voxelEmissionB[i], voxelQuantize(voxelEmission.b));

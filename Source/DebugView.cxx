@@ -5,7 +5,6 @@
 #include "LightVoxels.h"
 #include "VoxelGIShaders.h"
 #include "VoxelizePass.h"
-#include "vtkVoxelGIPass.h"
 
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkRenderer.h"
@@ -34,7 +33,6 @@ bool DebugView::Prepare(const Frame& frame, std::string& error)
 
 void DebugView::Run(const Frame& frame)
 {
-  ScopedStage stage(*frame.Clock, vtkVoxelGIPass::STAGE_DEBUG_VIEW);
   ComputeProgram& p = this->Program;
   p.Use(frame.Window);
   const VoxelizePass& voxels = this->Voxels;

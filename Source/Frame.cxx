@@ -32,7 +32,6 @@ Settings Snapshot(vtkVoxelGIPass* pass, bool hasConservativeRaster)
   c.ConeShadows = pass->GetConeShadows() != 0;
   c.ShadowConeAperture = pass->GetShadowConeAperture();
   c.DebugView = pass->GetDebugView();
-  c.TimeStages = pass->GetTimeStages() != 0;
   return c;
 }
 
@@ -69,7 +68,7 @@ void StageClock::SetCpuTime(int stage, double milliseconds)
 
 void StageClock::Resolve(int stageCount)
 {
-  for (int stage = 0; stage < stageCount && this->Timing; ++stage)
+  for (int stage = 0; this->Timing && stage < stageCount; ++stage)
   {
     if (this->Timers[stage].IsAllocated())
     {

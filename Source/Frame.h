@@ -51,7 +51,6 @@ struct Settings
   bool ConeShadows = true;
   double ShadowConeAperture = 0.0;
   int DebugView = 0;
-  bool TimeStages = false;
 };
 
 /// The pass's settings now; HardwareConservativeRaster only where the context has it.

@@ -13,6 +13,35 @@
 namespace voxelgi
 {
 
+void LightBlock::Pack(vtkLight* light, const VoxelGrid& grid, Light& l)
+{
+  double position[3], focal[3];
+  light->GetTransformedPosition(position);
+  light->GetTransformedFocalPoint(focal);
+  double direction[3] = { focal[0] - position[0], focal[1] - position[1], focal[2] - position[2] };
+  if (vtkMath::Normalize(direction) == 0.0)
+  {
+    direction[2] = -1.0;
+  }
+  const glm::dvec3 p = grid.ToVoxel(glm::dvec3(position[0], position[1], position[2]));
+  const bool positional = light->GetPositional() != 0;
+  for (int a = 0; a < 3; ++a)
+  {
+    l.Position[a] = static_cast<float>(p[a]);
+    l.Direction[a] = static_cast<float>(direction[a]);
+    l.Color[a] = static_cast<float>(light->GetDiffuseColor()[a] * light->GetIntensity());
+    l.Attenuation[a] = static_cast<float>(light->GetAttenuationValues()[a]);
+  }
+  l.Position[3] = positional ? 1.0f : 0.0f;
+  // VTK treats positional lights with a cone angle below 90 degrees as spots.
+  const double cone = light->GetConeAngle();
+  l.Direction[3] = (positional && cone < 90.0)
+    ? static_cast<float>(std::cos(vtkMath::RadiansFromDegrees(cone)))
+    : -2.0f;
+  l.Color[3] = static_cast<float>(light->GetExponent());
+  l.Attenuation[3] = light->LightTypeIsHeadlight() ? 1.0f : 0.0f;
+}
+
 bool LightBlock::Gather(
   vtkRenderer* renderer, const VoxelGrid& grid, std::vector<std::string>& warnings)
 {
@@ -48,33 +77,8 @@ bool LightBlock::Gather(
       ++dropped;
       continue;
     }
-    Light& l = block.Lights[count++];
     this->Used.push_back(light);
-    double position[3], focal[3];
-    light->GetTransformedPosition(position);
-    light->GetTransformedFocalPoint(focal);
-    double direction[3] = { focal[0] - position[0], focal[1] - position[1], focal[2] - position[2] };
-    if (vtkMath::Normalize(direction) == 0.0)
-    {
-      direction[2] = -1.0;
-    }
-    const glm::dvec3 p = grid.ToVoxel(glm::dvec3(position[0], position[1], position[2]));
-    const bool positional = light->GetPositional() != 0;
-    for (int a = 0; a < 3; ++a)
-    {
-      l.Position[a] = static_cast<float>(p[a]);
-      l.Direction[a] = static_cast<float>(direction[a]);
-      l.Color[a] = static_cast<float>(light->GetDiffuseColor()[a] * light->GetIntensity());
-      l.Attenuation[a] = static_cast<float>(light->GetAttenuationValues()[a]);
-    }
-    l.Position[3] = positional ? 1.0f : 0.0f;
-    // VTK treats positional lights with a cone angle below 90 degrees as spots.
-    const double cone = light->GetConeAngle();
-    l.Direction[3] = (positional && cone < 90.0)
-      ? static_cast<float>(std::cos(vtkMath::RadiansFromDegrees(cone)))
-      : -2.0f;
-    l.Color[3] = static_cast<float>(light->GetExponent());
-    l.Attenuation[3] = light->LightTypeIsHeadlight() ? 1.0f : 0.0f;
+    Pack(light, grid, block.Lights[count++]);
   }
   block.Info[0] = count;
   block.Info[1] = renderer->GetTwoSidedLighting() ? 1 : 0;

@@ -51,6 +51,9 @@ private:
     Light Lights[MaxLights];
     int Info[4];
   };
+  /// One light in grid coordinates, in the block's layout.
+  static void Pack(vtkLight* light, const VoxelGrid& grid, Light& packed);
+
   Block Data{};
   Block Uploaded{};
   bool HaveUploaded = false;

@@ -91,8 +91,6 @@ public:
   const std::vector<ActorRecord>& GetRecords() const { return this->Records; }
   /// Any voxelized actor with a specular coefficient above 0 (else no specular cone).
   bool GetAnySpecular() const { return this->AnySpecular; }
-  /// Whether the last accepted voxels used the hardware conservative rasterizer.
-  bool GetBuiltHardwareConservative() const { return this->BuiltHardware; }
   /// CPU time of the last Scan(), milliseconds.
   double GetMilliseconds() const { return this->Milliseconds; }
 

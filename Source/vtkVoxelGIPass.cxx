@@ -344,11 +344,8 @@ void vtkVoxelGIPass::Render(const vtkRenderState* s)
 //------------------------------------------------------------------------------
 void vtkVoxelGIPass::RenderDelegate(const vtkRenderState* s)
 {
-  if (this->DelegatePass)
-  {
-    this->DelegatePass->Render(s);
-    this->NumberOfRenderedProps += this->DelegatePass->GetNumberOfRenderedProps();
-  }
+  this->DelegatePass->Render(s);
+  this->NumberOfRenderedProps += this->DelegatePass->GetNumberOfRenderedProps();
 }
 
 //------------------------------------------------------------------------------
@@ -484,6 +481,7 @@ void vtkVoxelGIPass::RenderGI(bool reuse)
 void vtkVoxelGIPass::RenderVoxelView()
 {
   Internals& in = *this->Internal;
+  // Timed with its Present.
   voxelgi::ScopedStage stage(in.Clock, STAGE_DEBUG_VIEW);
   std::string error;
   if (!in.Debug.Prepare(in.Frame, error))
@@ -509,6 +507,7 @@ void vtkVoxelGIPass::TraceFrame()
   }
   in.GBuffer->Run(frame);
   this->NumberOfRenderedProps += in.GBuffer->GetNumberOfRenderedProps();
+  // VTK's raster work came in between: bind the blocks again before the dispatches.
   in.Lights.Bind();
   in.GridBlock.Bind(frame.Grid);
   in.Trace.Run(frame);
