@@ -5,8 +5,14 @@
 // cones over the normal's hemisphere (indirect diffuse and AO), one specular cone whose
 // aperture follows the specular power, and a narrow cone toward each light for soft shadows.
 // Outputs: 0 = indirect light (diffuse x albedo + specular) and AO, 1 = the part of VTK's
-// direct shading (Phong, per shadowed light) that the shadow cones find occluded.
+// direct shading (Phong, per shadowed light) that the shadow cones find occluded, 2 = the
+// surface they belong to (for the next frame's reuse).
 // composite.comp upsamples these and composites them with VTK's shading.
+//
+// Temporal reuse (temporalPhase >= 0, frames where only the camera changed): the tiles of one
+// class of four are traced, the others take the previous frame's result where the previous
+// frame saw the same surface there (reprojected position, normal and, on specular surfaces,
+// the view direction), and are traced where it did not.
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "lights.glsl"
@@ -29,6 +35,14 @@ uniform int coneShadows;
 uniform float shadowTanHalf;
 layout(rgba16f, binding = 0) uniform writeonly image2D traceIndirect; // indirect rgb, AO
 layout(rgba16f, binding = 1) uniform writeonly image2D traceShadowed; // occluded direct rgb
+layout(rg32f, binding = 2) uniform writeonly image2D traceSurface; // NDC depth, encoded normal
+uniform int temporalPhase;         // tile class traced this frame; -1: every tile
+uniform sampler2D previousIndirect;
+uniform sampler2D previousShadowed;
+uniform sampler2D previousSurface;
+uniform mat4 previousGridFromNDC;
+uniform mat4 previousNDCFromGrid;
+uniform vec4 previousEye;          // grid coordinates (w 1) or direction of view (parallel, w 0)
 
 // Half-angle tangent of a cone matching VTK's Phong lobe of this specular power.
 float specularTanHalf(float power)
@@ -40,6 +54,96 @@ float specularTanHalf(float power)
 vec4 gbufferAt(sampler2D image, vec2 uv)
 {
   return textureLod(image, uv, 0.0);
+}
+
+// Frames a result may be carried over before it is traced again: repeated resampling blurs.
+const uint reuseLimit = 3u;
+
+// A unit vector (octahedral coordinates, 10 bits each) and the result's age in frames, as an
+// exact integer in a float.
+float encodeSurface(vec3 n, uint age)
+{
+  vec2 e = n.xy / (abs(n.x) + abs(n.y) + abs(n.z));
+  if (n.z < 0.0)
+  {
+    e = (1.0 - abs(e.yx)) * mix(vec2(-1.0), vec2(1.0), greaterThanEqual(e, vec2(0.0)));
+  }
+  uvec2 q = uvec2(round(clamp(e * 0.5 + 0.5, 0.0, 1.0) * 1023.0));
+  return float((min(age, reuseLimit) * 1024u + q.x) * 1024u + q.y);
+}
+
+vec3 decodeSurface(float code, out uint age)
+{
+  uint c = uint(code);
+  age = c / (1024u * 1024u);
+  vec2 e = vec2(float((c / 1024u) % 1024u), float(c % 1024u)) / 1023.0 * 2.0 - 1.0;
+  vec3 n = vec3(e, 1.0 - abs(e.x) - abs(e.y));
+  if (n.z < 0.0)
+  {
+    n.xy = (1.0 - abs(n.yx)) * mix(vec2(-1.0), vec2(1.0), greaterThanEqual(n.xy, vec2(0.0)));
+  }
+  return normalize(n);
+}
+
+// The previous frame's results for the surface at p (normal n, seen along viewDir),
+// interpolated bilinearly from its pixels around p's reprojection that held the same
+// surface: a point within a quarter voxel of p's tangent plane and a voxel of p, a normal
+// within ~18 degrees, a result younger than reuseLimit, and a view direction that turned less
+// than acos(viewCosine). False when p was out of its view or most of that weight belongs to
+// other surfaces; `age` gets the oldest result's age.
+bool previousResults(vec3 p, vec3 n, vec3 viewDir, float viewCosine, ivec2 size,
+  out vec4 indirect, out vec4 shadowed, out uint age)
+{
+  vec4 clip = previousNDCFromGrid * vec4(p, 1.0);
+  vec3 previousView = previousEye.w > 0.0 ? normalize(p - previousEye.xyz) : previousEye.xyz;
+  if (!(clip.w > 0.0) || dot(previousView, viewDir) < viewCosine)
+  {
+    return false;
+  }
+  vec2 f = (clip.xy / clip.w * 0.5 + 0.5) * vec2(size) - 0.5;
+  vec2 base = floor(f);
+  vec2 w = f - base;
+  indirect = vec4(0.0);
+  shadowed = vec4(0.0);
+  age = 0u;
+  float weightSum = 0.0;
+  for (int j = 0; j < 2; ++j)
+  {
+    for (int i = 0; i < 2; ++i)
+    {
+      ivec2 texel = ivec2(base) + ivec2(i, j);
+      if (any(lessThan(texel, ivec2(0))) || any(greaterThanEqual(texel, size)))
+      {
+        continue;
+      }
+      vec2 surface = texelFetch(previousSurface, texel, 0).xy;
+      if (surface.x >= 1.0)
+      {
+        continue;
+      }
+      vec4 q = previousGridFromNDC *
+        vec4((vec2(texel) + 0.5) / vec2(size) * 2.0 - 1.0, surface.x * 2.0 - 1.0, 1.0);
+      vec3 d = q.xyz / q.w - p;
+      uint texelAge;
+      vec3 m = decodeSurface(surface.y, texelAge);
+      if (abs(dot(d, n)) > 0.1 || dot(d, d) > 0.0625 || dot(m, n) < 0.95 || texelAge >= reuseLimit)
+      {
+        continue;
+      }
+      age = max(age, texelAge);
+      float weight = (i == 1 ? w.x : 1.0 - w.x) * (j == 1 ? w.y : 1.0 - w.y);
+      indirect += weight * texelFetch(previousIndirect, texel, 0);
+      shadowed += weight * texelFetch(previousShadowed, texel, 0);
+      weightSum += weight;
+    }
+  }
+  if (weightSum < 0.5)
+  {
+    return false;
+  }
+  indirect /= weightSum;
+  shadowed /= weightSum;
+  return true;
 }
 
 void main()
@@ -57,6 +161,7 @@ void main()
   {
     imageStore(traceIndirect, pixel, vec4(0.0, 0.0, 0.0, 1.0));
     imageStore(traceShadowed, pixel, vec4(0.0));
+    imageStore(traceSurface, pixel, vec4(1.0, 0.0, 0.0, 0.0));
     return;
   }
   vec3 p = gbufferGridPosition(texCoord, depth);
@@ -87,6 +192,25 @@ void main()
   vec4 material = gbufferAt(gbufferMaterial, texCoord);
   vec3 albedo = material.rgb;
   float specular = material.a;
+
+  uvec2 tile = gl_WorkGroupID.xy & 1u;
+  if (temporalPhase >= 0 && int(tile.x + 2u * tile.y) != temporalPhase)
+  {
+    // Specular light depends on the view: reuse it only over a small fraction of its lobe.
+    bool viewDependent = specular > 0.0 && (specularCone != 0 || coneShadows != 0);
+    float viewCosine = viewDependent ? cos(0.2 * atan(specularTanHalf(normalSpec.w))) : -2.0;
+    vec4 previousIndirectAO, previousOccluded;
+    uint age;
+    if (previousResults(p, n, viewDir, viewCosine, size, previousIndirectAO, previousOccluded, age))
+    {
+      imageStore(traceIndirect, pixel, previousIndirectAO);
+      imageStore(traceShadowed, pixel, previousOccluded);
+      imageStore(traceSurface, pixel, vec4(depth, encodeSurface(n, age + 1u), 0.0, 0.0));
+      return;
+    }
+  }
+  imageStore(traceSurface, pixel, vec4(depth, encodeSurface(n, 0u), 0.0, 0.0));
+
   vec3 origin = p + n * startOffset;
 
   vec3 t, b;

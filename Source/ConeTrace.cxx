@@ -38,13 +38,24 @@ bool ConeTrace::Prepare(const Frame& frame, std::string& error)
   const double scale = frame.Config.TraceResolution;
   const int tw = std::max(1, static_cast<int>(std::ceil(frame.Width * scale)));
   const int th = std::max(1, static_cast<int>(std::ceil(frame.Height * scale)));
-  if (!this->Indirect)
+  for (TraceImages& images : this->History)
   {
-    this->Indirect = NewImageTexture(frame.Window, GL_RGBA16F, tw, th);
-    this->Shadowed = NewImageTexture(frame.Window, GL_RGBA16F, tw, th);
+    if (!images.Indirect)
+    {
+      images.Indirect = NewImageTexture(frame.Window, GL_RGBA16F, tw, th);
+      images.Shadowed = NewImageTexture(frame.Window, GL_RGBA16F, tw, th);
+      images.Surface = NewImageTexture(frame.Window, GL_RG32F, tw, th, 2);
+      this->HistoryValid = false;
+    }
+    if (images.Indirect->GetWidth() != static_cast<unsigned int>(tw) ||
+      images.Indirect->GetHeight() != static_cast<unsigned int>(th))
+    {
+      images.Indirect->Resize(tw, th);
+      images.Shadowed->Resize(tw, th);
+      images.Surface->Resize(tw, th);
+      this->HistoryValid = false;
+    }
   }
-  this->Indirect->Resize(tw, th);
-  this->Shadowed->Resize(tw, th);
   this->Cones.Set(frame.Config, frame.Grid.Resolution);
   return this->Program.BuildOnce(shaders::cone_trace_comp, "cone tracing", error);
 }
@@ -54,9 +65,9 @@ void ConeTrace::SetUniforms(const Frame& frame)
   ComputeProgram& p = this->Program;
   const Settings& config = frame.Config;
   // NDC -> grid coordinates (composed in double, see GridFromNDC) and view normals -> grid.
-  float gridFromNDC[16];
-  GridFromNDC(frame.Renderer, frame.Grid, gridFromNDC);
-  p.SetMat4Array("voxelFromNDC", 1, gridFromNDC);
+  // Kept for the next frame's reprojection (after SetHistoryUniforms used the last ones).
+  GridFromNDC(frame.Renderer, frame.Grid, this->PreviousGridFromNDC, this->PreviousNDCFromGrid);
+  p.SetMat4Array("voxelFromNDC", 1, this->PreviousGridFromNDC);
   vtkMatrix4x4* view = frame.Renderer->GetActiveCamera()->GetViewTransformMatrix();
   float normalToGrid[9];
   for (int r = 0; r < 3; ++r)
@@ -86,37 +97,80 @@ void ConeTrace::SetUniforms(const Frame& frame)
     static_cast<float>(std::tan(vtkMath::RadiansFromDegrees(0.5 * config.ShadowConeAperture))));
 }
 
+void ConeTrace::SetHistoryUniforms(const Frame& frame, bool reuse)
+{
+  ComputeProgram& p = this->Program;
+  p.SetInt("temporalPhase", reuse ? this->Phase : -1);
+  p.SetMat4Array("previousGridFromNDC", 1, this->PreviousGridFromNDC);
+  p.SetMat4Array("previousNDCFromGrid", 1, this->PreviousNDCFromGrid);
+  p.SetVec4("previousEye", this->PreviousEye);
+  this->Phase = reuse ? (this->Phase + 1) % 4 : 0;
+  // Remember this frame's eye in grid coordinates, or the direction of view of a parallel
+  // projection (w 0).
+  vtkCamera* camera = frame.Renderer->GetActiveCamera();
+  double eye[3];
+  camera->GetPosition(eye);
+  double direction[3];
+  camera->GetDirectionOfProjection(direction);
+  const bool parallel = camera->GetParallelProjection() != 0;
+  for (int a = 0; a < 3; ++a)
+  {
+    this->PreviousEye[a] = static_cast<float>(
+      parallel ? direction[a] : (eye[a] - frame.Grid.Origin[a]) / frame.Grid.VoxelSize);
+  }
+  this->PreviousEye[3] = parallel ? 0.0f : 1.0f;
+}
+
 void ConeTrace::Run(const Frame& frame)
 {
   ScopedStage stage(*frame.Clock, vtkVoxelGIPass::STAGE_CONE_TRACE);
+  const bool reuse = frame.Config.TemporalReuse && frame.CameraOnly && this->HistoryValid;
+  this->Current = 1 - this->Current;
+  const TraceImages& now = this->History[this->Current];
+  const TraceImages& before = this->History[1 - this->Current];
   ComputeProgram& p = this->Program;
   p.Use(frame.Window);
   SamplerBindings samplers(frame.Window);
   SetConeTracingSamplers(
     p, samplers, this->Lighting.GetRadiance(), this->Mipmap, 0.0f, this->Cones.StepFactor);
-  ScopedTextures inputs(
-    { this->GBuffer.GetNormal(), this->GBuffer.GetMaterial(), this->GBuffer.GetDepth() });
+  ScopedTextures inputs({ this->GBuffer.GetNormal(), this->GBuffer.GetMaterial(),
+    this->GBuffer.GetDepth(), before.Indirect, before.Shadowed, before.Surface });
+  this->HistoryValid = false;
+  this->Reused = false;
   if (!(samplers.Complete() && inputs.Complete()))
   {
     return;
   }
+  p.SetInt("previousIndirect", before.Indirect->GetTextureUnit());
+  p.SetInt("previousShadowed", before.Shadowed->GetTextureUnit());
+  p.SetInt("previousSurface", before.Surface->GetTextureUnit());
+  this->SetHistoryUniforms(frame, reuse);
   this->SetUniforms(frame);
-  BindImage2D(0, this->Indirect, GL_WRITE_ONLY, GL_RGBA16F);
-  BindImage2D(1, this->Shadowed, GL_WRITE_ONLY, GL_RGBA16F);
-  p.DispatchImage(this->Indirect->GetWidth(), this->Indirect->GetHeight(), Tile);
+  BindImage2D(0, now.Indirect, GL_WRITE_ONLY, GL_RGBA16F);
+  BindImage2D(1, now.Shadowed, GL_WRITE_ONLY, GL_RGBA16F);
+  BindImage2D(2, now.Surface, GL_WRITE_ONLY, GL_RG32F);
+  p.DispatchImage(now.Indirect->GetWidth(), now.Indirect->GetHeight(), Tile);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  this->HistoryValid = true;
+  this->Reused = reuse;
 }
 
 void ConeTrace::ReleaseGraphicsResources(vtkWindow* window)
 {
-  for (vtkTextureObject* texture : { this->Indirect.Get(), this->Shadowed.Get() })
+  for (TraceImages& images : this->History)
   {
-    if (texture)
+    for (vtkTextureObject* texture :
+      { images.Indirect.Get(), images.Shadowed.Get(), images.Surface.Get() })
     {
-      texture->ReleaseGraphicsResources(window);
+      if (texture)
+      {
+        texture->ReleaseGraphicsResources(window);
+      }
     }
+    images = TraceImages();
   }
-  this->Indirect = this->Shadowed = nullptr;
+  this->HistoryValid = false;
+  this->Reused = false;
   this->Program.Release();
 }
 

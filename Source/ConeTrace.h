@@ -4,6 +4,12 @@
  * diffuse and AO), one specular cone whose aperture follows the specular power, and a narrow
  * cone toward each light for soft shadows, through the radiance mipmaps. Outputs: indirect
  * light + AO, and the part of VTK's direct shading the shadow cones find occluded.
+ *
+ * Temporal reuse: in a frame where only the camera changed (Frame::CameraOnly), one tile in
+ * four (rotating) is traced and the others take last frame's result at the surface's
+ * reprojected position, unless the surface there differs (position, normal, or, for specular
+ * surfaces, the view direction): then they are traced too. So every pixel is fresh at least
+ * every fourth frame and nothing is reused across a change of the surface it belongs to.
  */
 #ifndef VoxelGIConeTrace_h
 #define VoxelGIConeTrace_h
@@ -13,6 +19,7 @@
 #include "vtkSmartPointer.h"  // for vtkSmartPointer
 #include "vtkTextureObject.h" // for vtkSmartPointer
 
+#include <array>
 #include <string>
 
 class vtkWindow;
@@ -35,19 +42,39 @@ public:
   void ReleaseGraphicsResources(vtkWindow* window);
 
   /// Indirect rgb + AO, and occluded direct rgb, at the trace resolution.
-  vtkTextureObject* GetIndirect() const { return this->Indirect; }
-  vtkTextureObject* GetShadowed() const { return this->Shadowed; }
+  vtkTextureObject* GetIndirect() const { return this->History[this->Current].Indirect; }
+  vtkTextureObject* GetShadowed() const { return this->History[this->Current].Shadowed; }
+  /// Whether the last Run reused the frame before (a fraction of the tiles traced).
+  bool GetReused() const { return this->Reused; }
 
 private:
+  /// One frame's results, and the surface (NDC depth, encoded normal) they belong to.
+  struct TraceImages
+  {
+    vtkSmartPointer<vtkTextureObject> Indirect;
+    vtkSmartPointer<vtkTextureObject> Shadowed;
+    vtkSmartPointer<vtkTextureObject> Surface;
+  };
+
+  /// This frame's uniforms; keeps its camera matrices for the next frame.
   void SetUniforms(const Frame& frame);
+  /// The previous frame's camera for reprojection (used when `reuse`); keeps this frame's eye.
+  void SetHistoryUniforms(const Frame& frame, bool reuse);
 
   const GBufferPass& GBuffer;
   const LightVoxels& Lighting;
   const VoxelMipmap& Mipmap;
   ConeSettings Cones;
   ComputeProgram Program;
-  vtkSmartPointer<vtkTextureObject> Indirect;
-  vtkSmartPointer<vtkTextureObject> Shadowed;
+  std::array<TraceImages, 2> History; // this frame's and the previous frame's
+  int Current = 0;
+  bool HistoryValid = false;
+  bool Reused = false;
+  int Phase = 0;
+  // The camera of the last traced frame (grid coordinates).
+  float PreviousGridFromNDC[16] = {};
+  float PreviousNDCFromGrid[16] = {};
+  float PreviousEye[4] = {};
 };
 
 }

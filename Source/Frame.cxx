@@ -24,6 +24,7 @@ Settings Snapshot(vtkVoxelGIPass* pass, bool hasConservativeRaster)
   c.MaxTraceDistance = pass->GetMaxTraceDistance();
   c.ConeStartOffset = pass->GetConeStartOffset();
   c.TraceResolution = pass->GetTraceResolution();
+  c.TemporalReuse = pass->GetTemporalReuse() != 0;
   c.IndirectIntensity = pass->GetIndirectIntensity();
   c.SpecularCone = pass->GetSpecularCone() != 0;
   c.SpecularIntensity = pass->GetSpecularIntensity();

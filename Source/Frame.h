@@ -43,6 +43,7 @@ struct Settings
   double MaxTraceDistance = 0.0;
   double ConeStartOffset = 0.0;
   double TraceResolution = 1.0;
+  bool TemporalReuse = true;
   double IndirectIntensity = 0.0;
   bool SpecularCone = true;
   double SpecularIntensity = 0.0;
@@ -118,6 +119,9 @@ struct Frame
   bool LitScene = true;
   /// Whether any voxelized actor is specular (else no specular cone).
   bool AnySpecular = false;
+  /// Whether only the camera changed since the last traced frame (voxels, lights and
+  /// settings as they were): the trace may reuse that frame's results.
+  bool CameraOnly = false;
   /// The renderer's viewport in the window (tiled size and origin).
   int Width = 0;
   int Height = 0;

@@ -111,6 +111,11 @@ void ComputeProgram::SetVec2(const char* name, float x, float y)
   glUniform2f(glGetUniformLocation(this->Handle, name), x, y);
 }
 
+void ComputeProgram::SetVec4(const char* name, const float* values)
+{
+  glUniform4fv(glGetUniformLocation(this->Handle, name), 1, values);
+}
+
 void ComputeProgram::SetMat3(const char* name, const float* values)
 {
   glUniformMatrix3fv(glGetUniformLocation(this->Handle, name), 1, GL_FALSE, values);
@@ -586,18 +591,18 @@ vtkShaderProgram* ReadyQuad(
   return (quad->Program && quad->Program->GetCompiled()) ? quad->Program : nullptr;
 }
 
-vtkSmartPointer<vtkTextureObject> NewImageTexture(
-  vtkOpenGLRenderWindow* renWin, int internalFormat, int width, int height)
+vtkSmartPointer<vtkTextureObject> NewImageTexture(vtkOpenGLRenderWindow* renWin,
+  int internalFormat, int width, int height, int components)
 {
   auto texture = vtkSmartPointer<vtkTextureObject>::New();
   texture->SetContext(renWin);
   texture->SetInternalFormat(internalFormat);
-  texture->SetFormat(GL_RGBA);
+  texture->SetFormat(components == 2 ? GL_RG : GL_RGBA);
   texture->SetMinificationFilter(vtkTextureObject::Nearest);
   texture->SetMagnificationFilter(vtkTextureObject::Nearest);
   texture->SetWrapS(vtkTextureObject::ClampToEdge);
   texture->SetWrapT(vtkTextureObject::ClampToEdge);
-  texture->Allocate2D(width, height, 4, VTK_FLOAT);
+  texture->Allocate2D(width, height, components, VTK_FLOAT);
   return texture;
 }
 

@@ -53,6 +53,7 @@ public:
   void SetVec3Array(const char* name, int count, const float* values);
   void SetIntArray(const char* name, int count, const int* values);
   void SetVec2(const char* name, float x, float y);
+  void SetVec4(const char* name, const float* values);
   /// Column-major 4x4 matrices.
   void SetMat4Array(const char* name, int count, const float* values);
   /// A column-major 3x3 matrix.
@@ -253,9 +254,10 @@ private:
 vtkShaderProgram* ReadyQuad(
   std::unique_ptr<vtkOpenGLQuadHelper>& quad, vtkOpenGLRenderWindow* renWin, const char* fragment);
 
-/// A 2D RGBA texture of `internalFormat` (float data), nearest filtered, for image results.
-vtkSmartPointer<vtkTextureObject> NewImageTexture(
-  vtkOpenGLRenderWindow* renWin, int internalFormat, int width, int height);
+/// A 2D texture of `internalFormat` (float data, 4 or 2 components), nearest filtered, for
+/// image results.
+vtkSmartPointer<vtkTextureObject> NewImageTexture(vtkOpenGLRenderWindow* renWin,
+  int internalFormat, int width, int height, int components = 4);
 
 /// The current context's OpenGL version.
 void ContextVersion(int& major, int& minor);

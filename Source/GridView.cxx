@@ -10,7 +10,22 @@
 namespace voxelgi
 {
 
-void GridFromNDC(vtkRenderer* renderer, const VoxelGrid& grid, float columnMajor[16])
+namespace
+{
+void ToColumnMajor(vtkMatrix4x4* m, float columnMajor[16])
+{
+  for (int r = 0; r < 4; ++r)
+  {
+    for (int c = 0; c < 4; ++c)
+    {
+      columnMajor[c * 4 + r] = static_cast<float>(m->GetElement(r, c));
+    }
+  }
+}
+}
+
+void GridFromNDC(
+  vtkRenderer* renderer, const VoxelGrid& grid, float columnMajor[16], float ndcFromGrid[16])
 {
   int width = 0, height = 0, x = 0, y = 0;
   renderer->GetTiledSizeAndOrigin(&width, &height, &x, &y);
@@ -27,12 +42,11 @@ void GridFromNDC(vtkRenderer* renderer, const VoxelGrid& grid, float columnMajor
   }
   vtkNew<vtkMatrix4x4> gridFromNDC;
   vtkMatrix4x4::Multiply4x4(gridFromWorld, worldFromNDC, gridFromNDC);
-  for (int r = 0; r < 4; ++r)
+  ToColumnMajor(gridFromNDC, columnMajor);
+  if (ndcFromGrid)
   {
-    for (int c = 0; c < 4; ++c)
-    {
-      columnMajor[c * 4 + r] = static_cast<float>(gridFromNDC->GetElement(r, c));
-    }
+    gridFromNDC->Invert();
+    ToColumnMajor(gridFromNDC, ndcFromGrid);
   }
 }
 

@@ -12,8 +12,9 @@ namespace voxelgi
 {
 struct VoxelGrid;
 
-/// Column-major 4x4 (for glUniformMatrix4fv).
-void GridFromNDC(vtkRenderer* renderer, const VoxelGrid& grid, float columnMajor[16]);
+/// Column-major 4x4 (for glUniformMatrix4fv); `ndcFromGrid`, if given, gets its inverse.
+void GridFromNDC(vtkRenderer* renderer, const VoxelGrid& grid, float columnMajor[16],
+  float ndcFromGrid[16] = nullptr);
 
 }
 

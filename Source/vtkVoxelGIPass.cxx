@@ -68,6 +68,7 @@ struct vtkVoxelGIPass::Internals
   voxelgi::Frame Frame;
 
   bool Traced = false;
+  vtkMTimeType TracedSettings = 0; // the settings' time at the last trace
   bool WarnedUnlit = false;
   bool WarnedNoDelegate = false;
   vtkWeakPointer<vtkOpenGLRenderWindow> Window; // the window whose context holds the resources
@@ -173,6 +174,11 @@ void vtkVoxelGIPass::SetPropDynamic(vtkProp* prop, bool dynamic)
 bool vtkVoxelGIPass::GetStageRan(int stage) const
 {
   return stage >= 0 && stage < NUMBER_OF_STAGES && this->Internal->Clock.Ran(stage);
+}
+
+bool vtkVoxelGIPass::GetTraceReused() const
+{
+  return this->GetStageRan(STAGE_CONE_TRACE) && this->Internal->Trace.GetReused();
 }
 
 double vtkVoxelGIPass::GetStageTime(int stage) const
@@ -328,7 +334,9 @@ void vtkVoxelGIPass::Render(const vtkRenderState* s)
   else
   {
     const bool unchanged = in.Scan.Unchanged(renderer, this->GetMTime());
-    this->RenderGI(traced && unchanged && !voxelsChanged && !radianceChanged);
+    in.Frame.CameraOnly = traced && !voxelsChanged && !radianceChanged &&
+      this->GetMTime() == in.TracedSettings;
+    this->RenderGI(in.Frame.CameraOnly && unchanged);
   }
   if (this->GIActive && voxelView)
   {
@@ -512,6 +520,7 @@ void vtkVoxelGIPass::TraceFrame()
   in.GridBlock.Bind(frame.Grid);
   in.Trace.Run(frame);
   in.Compositor.Run(frame);
+  in.TracedSettings = this->GetMTime();
 }
 
 //------------------------------------------------------------------------------

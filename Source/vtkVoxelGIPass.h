@@ -266,6 +266,20 @@ public:
 
   ///@{
   /**
+   * Temporal reuse: in frames where only the camera moved, trace one tile of the image in
+   * four (rotating, so every pixel is re-traced at least every fourth frame) and take the
+   * others from the previous frame at their reprojected surface, except where that surface
+   * differs (position, normal, or the view direction of a specular surface): those are
+   * traced too. Any change of the voxels, the lights or the settings traces everything. Off
+   * traces every pixel every frame. Default: on.
+   */
+  vtkSetMacro(TemporalReuse, vtkTypeBool);
+  vtkGetMacro(TemporalReuse, vtkTypeBool);
+  vtkBooleanMacro(TemporalReuse, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
    * Scale of the indirect diffuse light, in [0, 10]. Default: 1.
    */
   vtkVoxelGISetClampMacro(IndirectIntensity, double, 0.0, 10.0);
@@ -442,6 +456,12 @@ public:
   static const char* GetStageName(int stage);
 
   /**
+   * True when the last frame's cone tracing reused the frame before it (TemporalReuse, a
+   * frame where only the camera moved): one tile in four was traced, the rest reprojected.
+   */
+  bool GetTraceReused() const;
+
+  /**
    * True when the last frame ran the GI stages (false when GI was off, could not run on this
    * context, or the scene had nothing to voxelize).
    */
@@ -553,6 +573,7 @@ protected:
   double MaxTraceDistance{};
   double ConeStartOffset{};
   double TraceResolution{};
+  vtkTypeBool TemporalReuse{};
   double IndirectIntensity{};
   vtkTypeBool SpecularCone{};
   double SpecularIntensity{};

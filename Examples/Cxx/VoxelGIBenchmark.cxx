@@ -2,6 +2,7 @@
 //
 //   VoxelGIBenchmark [--scene cornell|field|atrium] [--objects N] [--size WxH] [--resolution R]
 //                    [--frames F] [--warmup W] [--trace-scale S] [--multisamples N] [--egl]
+//                    [--temporal-reuse 0|1]
 //                    [--csv FILE]
 //                    [--json FILE] [--image FILE]
 //
@@ -63,6 +64,7 @@ struct Options
   int Frames = 20;
   int Warmup = 3;
   double TraceScale = 1.0;
+  bool TemporalReuse = true;
   int MultiSamples = -1; // -1: VTK's default
   bool EGL = false;
   std::string CSV = "voxelgi-benchmark.csv";
@@ -254,6 +256,7 @@ bool Parse(int argc, char* argv[], Options& o)
     else if (arg == "--warmup") o.Warmup = std::atoi(next().c_str());
     else if (arg == "--egl") o.EGL = true;
     else if (arg == "--trace-scale") o.TraceScale = std::atof(next().c_str());
+    else if (arg == "--temporal-reuse") o.TemporalReuse = std::atoi(next().c_str()) != 0;
     else if (arg == "--multisamples") o.MultiSamples = std::atoi(next().c_str());
     else if (arg == "--csv") o.CSV = next();
     else if (arg == "--json") o.JSON = next();
@@ -276,6 +279,7 @@ int main(int argc, char* argv[])
   {
     std::cerr << "usage: VoxelGIBenchmark [--scene cornell|field|atrium] [--objects N] [--size WxH] "
                  "[--resolution R] [--frames F] [--warmup W] [--trace-scale S] [--multisamples N] [--egl] "
+                 "[--temporal-reuse 0|1] "
                  "[--csv FILE] [--json FILE] "
                  "[--image FILE]"
               << std::endl;
@@ -334,6 +338,7 @@ int main(int argc, char* argv[])
   vtkNew<vtkVoxelGIPass> gi;
   gi->SetVoxelResolution(o.Resolution);
   gi->SetTraceResolution(o.TraceScale);
+  gi->SetTemporalReuse(o.TemporalReuse);
   gi->TimeStagesOn();
   renderer->SetPass(gi);
 
@@ -421,7 +426,7 @@ int main(int argc, char* argv[])
 
   std::ofstream json(o.JSON);
   json << "{\n  \"scene\": \"" << o.Scene << "\", \"triangles\": " << triangles << ", \"width\": "
-       << o.Width << ", \"height\": " << o.Height << ", \"resolution\": " << o.Resolution << ", \"trace_scale\": " << o.TraceScale
+       << o.Width << ", \"height\": " << o.Height << ", \"resolution\": " << o.Resolution << ", \"trace_scale\": " << o.TraceScale << ", \"temporal_reuse\": " << o.TemporalReuse
        << ", \"multisamples\": " << window->GetMultiSamples() << ", \"frames\": " << o.Frames << ",\n  \"renderer\": \"" << RendererName(window)
        << "\",\n  \"median_ms\": {\n";
   std::cout << std::fixed << std::setprecision(2) << "\nmedian ms on " << RendererName(window)
