@@ -53,9 +53,25 @@ vec4 voxelConeTrace(vec3 origin, vec3 dir, float tanHalf, float start, float max
   float res = float(voxelResolution);
   float stepFactor = max(coneStepFactor, 0.05);
   float t = max(start, 0.5);
-  // The step count is bounded whatever the settings: no endless loops.
-  for (int i = 0; i < 512 && t < maxDistance && acc.a < 0.99; ++i)
+  // Where the cone leaves the grid its last sample is taken, half a voxel inside: a step
+  // must not jump over the geometry between the last sample and the grid's boundary (in a
+  // closed room the walls lie there, and the cone would end short of full opacity: light
+  // lost). The step count is bounded whatever the settings: no endless loops.
+  vec3 safeDir = mix(dir, vec3(1e-6), lessThan(abs(dir), vec3(1e-6)));
+  vec3 exits = max(-origin / safeDir, (vec3(res) - origin) / safeDir);
+  float tEnd = min(maxDistance, min(exits.x, min(exits.y, exits.z)));
+  bool last = false;
+  for (int i = 0; i < 512 && !last && acc.a < 0.99; ++i)
   {
+    if (t >= tEnd)
+    {
+      if (i == 0 || tEnd >= maxDistance)
+      {
+        break;
+      }
+      t = tEnd - 0.5;
+      last = true;
+    }
     vec3 p = origin + dir * t;
     if (any(lessThan(p, vec3(0.0))) || any(greaterThan(p, vec3(res))))
     {
@@ -64,8 +80,20 @@ vec4 voxelConeTrace(vec3 origin, vec3 dir, float tanHalf, float start, float max
     float diameter = 2.0 * tanHalf * t;
     if (dot(surfaceNormal, surfaceNormal) > 0.0)
     {
+      // The largest texel whose reach stays above the surface's voxels. Where even the
+      // finest level the caller may read (voxelMinLevel; the bounce, which writes the
+      // full-resolution volume, reads from level 1) would reach them, the sample is lifted
+      // along the normal to the lowest height it may be taken at: it still meets what
+      // stands beside the cone (the wall next to a floor), never the surface's own voxels.
+      float finest = exp2(voxelMinLevel);
       float height = dot(p - surface, surfaceNormal);
-      diameter = min(diameter, exp2(floor(log2(max((height - 1.0) / 1.5, 1.0)))));
+      float lowest = 1.0 + 1.5 * finest;
+      if (height < lowest)
+      {
+        p += surfaceNormal * (lowest - height);
+        height = lowest;
+      }
+      diameter = min(diameter, exp2(floor(log2((height - 1.0) / 1.5))));
     }
     diameter = max(diameter, 1.0);
     vec4 s = voxelSampleCone(p, diameter, dir);

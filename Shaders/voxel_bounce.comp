@@ -53,7 +53,9 @@ void main()
     for (int i = 0; i < coneCount; ++i)
     {
       vec3 d = normalize(coneDirections[i].x * t + coneDirections[i].y * b + coneDirections[i].z * n);
-      gathered += voxelConeTrace(p + n * 1.5, d, coneTanHalf, 1.0, maxDistance, 0.0, p, n, ignored).rgb;
+      // The voxel's surface lies within half a voxel of its centre: its voxels reach at most
+      // a voxel above p + n / 2, the plane the cone tracer keeps its samples clear of.
+      gathered += voxelConeTrace(p + n * 1.5, d, coneTanHalf, 1.0, maxDistance, 0.0, p + 0.5 * n, n, ignored).rgb;
     }
     gathered /= float(coneCount);
   }

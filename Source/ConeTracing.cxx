@@ -14,16 +14,17 @@ void ConeSettings::Set(int count, double apertureDegrees, double stepFactor, dou
 {
   this->Count = std::max(1, std::min(count, VOXELGI_MAX_CONES));
   const double halfAngle = vtkMath::RadiansFromDegrees(0.5 * apertureDegrees);
-  // A cone tilted further than this from the normal would sweep through the voxels of the
-  // surface it starts on (its lower edge sinks faster than its axis rises).
-  const double maxPolar = 0.5 * vtkMath::Pi() - std::asin(std::min(std::tan(halfAngle), 1.0));
   const double golden = vtkMath::Pi() * (3.0 - std::sqrt(5.0));
   for (int i = 0; i < this->Count; ++i)
   {
-    // Cosine-weighted spiral (equal-weight cones then estimate irradiance / pi), its polar
-    // angles compressed into [0, maxPolar].
+    // Cosine-weighted stratified spiral: cone i sits at the centre of the i-th of Count
+    // strata of equal cosine-weighted solid angle (sin^2 of the polar angle uniform), so
+    // that equal-weight cones estimate irradiance / pi. The polar angles are not compressed
+    // toward the normal (that over-weighted light from above and missed light near the
+    // horizon); the cone tracer keeps a cone off its own surface's voxels by the level it
+    // samples near the surface (Shaders/cone_tracing.glsl).
     const double u = this->Count == 1 ? 0.0 : (i + 0.5) / this->Count;
-    const double polar = std::asin(std::sqrt(u)) * maxPolar / (0.5 * vtkMath::Pi());
+    const double polar = std::asin(std::sqrt(u));
     const double phi = golden * i;
     this->Directions[3 * i] = static_cast<float>(std::sin(polar) * std::cos(phi));
     this->Directions[3 * i + 1] = static_cast<float>(std::sin(polar) * std::sin(phi));

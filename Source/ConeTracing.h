@@ -23,8 +23,9 @@ struct ConeSettings
   float StepFactor = 1.f;
   float MaxDistance = 0.f; // voxels
 
-  /// Fill `count` cosine-distributed directions (a golden-angle spiral over the hemisphere,
-  /// kept clear of the surface's own plane) for cones of full aperture `apertureDegrees`.
+  /// Fill `count` cosine-distributed directions (a golden-angle spiral over the whole
+  /// hemisphere, one per stratum of equal cosine-weighted solid angle, so that equal weights
+  /// estimate irradiance / pi) for cones of full aperture `apertureDegrees`.
   void Set(int count, double apertureDegrees, double stepFactor, double maxDistance);
   /// The same from the settings of a grid of `resolution` voxels.
   void Set(const Settings& settings, int resolution);

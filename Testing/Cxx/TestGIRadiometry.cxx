@@ -1,0 +1,609 @@
+// Radiometry of the GI image against closed-form physics (issue 17), pixel by pixel on the
+// read-back float images. Every expectation is computed here from the scene's geometry and
+// materials, never from the pass:
+//  Furnace        a closed box of albedo rho with uniform emission E, seen from inside: with B
+//                 voxel bounces (+ the per-pixel gather) every pixel is E (1 - rho^(B+2)) /
+//                 (1 - rho) -> E / (1 - rho); never above the limit, never darker with more
+//                 bounces. AO off (AO multiplies VTK's direct term: a separate defect).
+//  FurnaceDefaults the same at the default settings (AO on).
+//  AreaLight      one emissive square (radiance L, albedo 0) over a white plane (albedo rho):
+//                 the plane's radiance is rho L F, F the point-to-parallel-rectangle form
+//                 factor (closed form).
+//  LitByFloor     a block on a floor lit straight down by a directional light, seen face on:
+//                 its vertical face gets no direct light, only rho_b F L_floor from the floor
+//                 (F: face point -> floor form factor, integrated from the kernel). Not black.
+//  Contact        a small block on the same floor: the floor next to it must not be brighter
+//                 than the floor without it (black block), nor brighter than the bound of the
+//                 light its faces can reflect (white block).
+// Where the pass does not meet the physical tolerance yet, the test asserts the bound it meets
+// today (a regression guard, a little above the measured error) and prints the goal beside it
+// as "GOAL NOT MET" (docs/reference.md lists them).
+// Each case runs alone when its name is given on the command line (ctest runs them one by
+// one); the composited images are written to the test output directory (-T) as
+// TestGIRadiometry-<case>.png.
+#include "VoxelGITestUtilities.h"
+#include "vtkVoxelGIPass.h"
+#include "vtkVoxelGIScenes.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkCubeSource.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkLight.h"
+#include "vtkNew.h"
+#include "vtkPNGWriter.h"
+#include "vtkPointData.h"
+#include "vtkProperty.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace
+{
+using glm::dvec3;
+constexpr double Pi = 3.14159265358979323846;
+
+std::string OutputDirectory = ".";
+
+// An error against its physical goal and the bound asserted today (see above).
+bool Within(const std::string& what, double error, double goal, double asserted)
+{
+  std::cout << what << ": " << error << (error <= goal ? " (goal " : " (GOAL NOT MET: goal ")
+            << goal << ", asserted " << asserted << ")" << std::endl;
+  if (error > asserted)
+  {
+    std::cerr << "FAILED: " << what << " " << error << " above " << asserted << std::endl;
+    return false;
+  }
+  return true;
+}
+
+// The composited float image as an 8-bit PNG (clamped), for the person reading the log.
+void SavePng(vtkFloatArray* rgba, int w, int h, const std::string& name)
+{
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(w, h, 1);
+  vtkNew<vtkUnsignedCharArray> bytes;
+  bytes->SetNumberOfComponents(3);
+  bytes->SetNumberOfTuples(static_cast<vtkIdType>(w) * h);
+  for (vtkIdType i = 0; i < static_cast<vtkIdType>(w) * h; ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      const double v = std::min(std::max(static_cast<double>(rgba->GetComponent(i, c)), 0.0), 1.0);
+      bytes->SetComponent(i, c, std::floor(255.0 * v + 0.5));
+    }
+  }
+  image->GetPointData()->SetScalars(bytes);
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetInputData(image);
+  const std::string path = OutputDirectory + "/TestGIRadiometry-" + name + ".png";
+  writer->SetFileName(path.c_str());
+  writer->Write();
+}
+
+// The world ray through the centre of pixel (x, y) (display coordinates, rows bottom up).
+void PixelRay(vtkRenderer* renderer, int x, int y, dvec3& origin, dvec3& direction)
+{
+  dvec3 ends[2];
+  for (int k = 0; k < 2; ++k)
+  {
+    renderer->SetDisplayPoint(x + 0.5, y + 0.5, k);
+    renderer->DisplayToWorld();
+    const double* w = renderer->GetWorldPoint();
+    ends[k] = dvec3(w[0], w[1], w[2]) / w[3];
+  }
+  origin = ends[0];
+  direction = glm::normalize(ends[1] - ends[0]);
+}
+
+// Ray parameter of the first hit of an axis-aligned box, or -1.
+double HitBox(const dvec3& o, const dvec3& d, const dvec3& lo, const dvec3& hi)
+{
+  double t0 = 0.0, t1 = 1e30;
+  for (int a = 0; a < 3; ++a)
+  {
+    if (std::abs(d[a]) < 1e-12)
+    {
+      if (o[a] < lo[a] || o[a] > hi[a])
+      {
+        return -1.0;
+      }
+      continue;
+    }
+    double ta = (lo[a] - o[a]) / d[a], tb = (hi[a] - o[a]) / d[a];
+    if (ta > tb)
+    {
+      std::swap(ta, tb);
+    }
+    t0 = std::max(t0, ta);
+    t1 = std::min(t1, tb);
+  }
+  return t0 <= t1 ? t0 : -1.0;
+}
+
+// Form factor from a differential area to a parallel rectangle of sides a, b at distance c,
+// the area's foot under one corner (e.g. Howell's catalogue, B-3).
+double CornerFormFactor(double a, double b, double c)
+{
+  const double A = a / c, B = b / c;
+  const double sa = std::sqrt(1.0 + A * A), sb = std::sqrt(1.0 + B * B);
+  return (A / sa * std::atan(B / sa) + B / sb * std::atan(A / sb)) / (2.0 * Pi);
+}
+
+// ... to the rectangle [x0, x1] x [z0, z1] at height c above the point (px, pz): signed
+// sums of the four corner rectangles.
+double RectangleFormFactor(double px, double pz, double x0, double x1, double z0, double z1, double c)
+{
+  auto part = [c](double u, double v) {
+    // rectangle from the foot to the corner (u, v), signed by the quadrant
+    if (u == 0.0 || v == 0.0)
+    {
+      return 0.0;
+    }
+    const double s = (u > 0.0 ? 1.0 : -1.0) * (v > 0.0 ? 1.0 : -1.0);
+    return s * CornerFormFactor(std::abs(u), std::abs(v), c);
+  };
+  return part(x1 - px, z1 - pz) - part(x0 - px, z1 - pz) - part(x1 - px, z0 - pz) +
+    part(x0 - px, z0 - pz);
+}
+
+// Form factor from a differential area at p with unit normal n to the floor rectangle
+// [x0, x1] x [z0, z1] (y = 0, normal +y), integrated from the kernel cos cos / (pi r^2) on a
+// grid refined toward the area (midpoint rule in a stretched coordinate).
+double FloorFormFactor(const dvec3& p, const dvec3& n, double x0, double x1, double z0, double z1)
+{
+  const int nx = 600, nz = 600;
+  double sum = 0.0;
+  // z stretched as z0 + (z1 - z0) s^3 when the area stands on the z0 edge (the kernel is
+  // singular there), x uniform.
+  for (int j = 0; j < nz; ++j)
+  {
+    const double s0 = double(j) / nz, s1 = double(j + 1) / nz;
+    const double za = z0 + (z1 - z0) * s0 * s0 * s0, zb = z0 + (z1 - z0) * s1 * s1 * s1;
+    const double z = 0.5 * (za + zb), dz = zb - za;
+    for (int i = 0; i < nx; ++i)
+    {
+      const double x = x0 + (x1 - x0) * (i + 0.5) / nx, dx = (x1 - x0) / nx;
+      const dvec3 r = dvec3(x, 0.0, z) - p;
+      const double r2 = glm::dot(r, r);
+      const double cos1 = glm::dot(n, r) / std::sqrt(r2);
+      const double cos2 = -r.y / std::sqrt(r2);
+      if (cos1 > 0.0 && cos2 > 0.0)
+      {
+        sum += cos1 * cos2 / (Pi * r2) * dx * dz;
+      }
+    }
+  }
+  return sum;
+}
+
+struct View
+{
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkRenderWindow> Window;
+  vtkNew<vtkVoxelGIPass> GI;
+  int Size = 0;
+
+  View(int size, int resolution)
+    : Size(size)
+  {
+    this->Window->SetSize(size, size);
+    this->Window->AddRenderer(this->Renderer);
+    this->GI->SetVoxelResolution(resolution);
+    this->Renderer->SetPass(this->GI);
+  }
+  void Aim(const dvec3& position, const dvec3& focal, double viewAngle = 30.0)
+  {
+    vtkCamera* camera = this->Renderer->GetActiveCamera();
+    camera->SetPosition(position.x, position.y, position.z);
+    camera->SetFocalPoint(focal.x, focal.y, focal.z);
+    camera->SetViewUp(0.0, 1.0, 0.0);
+    camera->SetViewAngle(viewAngle);
+    this->Renderer->ResetCameraClippingRange();
+  }
+  // Render and read back the composite and indirect images; false if GI did not trace.
+  bool Render(vtkFloatArray* composite, vtkFloatArray* indirect)
+  {
+    this->Window->Render();
+    return this->GI->GetGIActive() && voxelgi_test::AllFinite(this->GI) &&
+      this->GI->GetFloatImage(vtkVoxelGIPass::IMAGE_COMPOSITE, composite) &&
+      (!indirect || this->GI->GetFloatImage(vtkVoxelGIPass::IMAGE_INDIRECT, indirect));
+  }
+};
+
+// An emitter as the project's scenes make them: VTK draws it unlit at its radiance (ambient
+// colour, in a renderer without lights), the pass lights the scene with it.
+void MakeEmitter(vtkActor* actor, double emission, bool reflects)
+{
+  actor->GetProperty()->SetAmbient(1.0);
+  actor->GetProperty()->SetAmbientColor(emission, emission, emission);
+  if (!reflects)
+  {
+    actor->GetProperty()->SetDiffuse(0.0);
+  }
+  vtkVoxelGIPass::SetPropEmission(actor, emission, emission, emission);
+}
+
+struct Stats
+{
+  double Min = 1e30, Max = -1e30, Sum = 0.0;
+  int N = 0;
+  void Add(double v)
+  {
+    this->Min = std::min(this->Min, v);
+    this->Max = std::max(this->Max, v);
+    this->Sum += v;
+    ++this->N;
+  }
+  double Mean() const { return this->N ? this->Sum / this->N : 0.0; }
+};
+
+//------------------------------------------------------------------------------
+// Pixel furnace: closed box [0, 4]^3, walls of albedo rho emitting E, camera inside.
+int FurnaceCase(bool defaults)
+{
+  const double E = 0.5, rho = 0.5, limit = E / (1.0 - rho);
+  const int size = 64;
+  View view(size, 32);
+  view.Renderer->AutomaticLightCreationOff();
+  const double S = 4.0;
+  const dvec3 quads[6][3] = { { { 0, 0, 0 }, { 0, 0, S }, { S, 0, 0 } },
+    { { 0, S, 0 }, { S, S, 0 }, { 0, S, S } }, { { 0, 0, 0 }, { S, 0, 0 }, { 0, S, 0 } },
+    { { 0, 0, S }, { 0, S, S }, { S, 0, S } }, { { 0, 0, 0 }, { 0, S, 0 }, { 0, 0, S } },
+    { { S, 0, 0 }, { S, 0, S }, { S, S, 0 } } };
+  for (const auto& q : quads)
+  {
+    MakeEmitter(voxelgi_test::AddQuad(view.Renderer, q[0], q[1], q[2], rho, rho, rho), E, true);
+  }
+  if (!defaults)
+  {
+    view.GI->SetAmbientOcclusionStrength(0.0);
+  }
+  view.Aim(dvec3(2.0, 2.0, 3.5), dvec3(2.0, 2.0, 0.0), 60.0);
+  const char* label = defaults ? "furnace (defaults)" : "furnace (AO off)";
+
+  std::vector<float> previous;
+  bool ok = true;
+  for (int bounces : { 0, 1, 2, 4, 10 })
+  {
+    view.GI->SetBounces(bounces);
+    vtkNew<vtkFloatArray> composite, indirect;
+    VOXELGI_CHECK(view.Render(composite, indirect), "GI did not run");
+    // B voxel bounces, then the pixel's own gather: B + 2 terms of the Neumann series.
+    const double expected = E * (1.0 - std::pow(rho, bounces + 2)) / (1.0 - rho);
+    Stats all, ind;
+    double worst = 0.0;
+    int darker = 0;
+    std::vector<float> current(static_cast<std::size_t>(size) * size);
+    for (vtkIdType i = 0; i < size * size; ++i)
+    {
+      const double v = composite->GetComponent(i, 0);
+      all.Add(v);
+      ind.Add(indirect->GetComponent(i, 0));
+      worst = std::max(worst, std::abs(v - expected) / expected);
+      current[i] = static_cast<float>(v);
+      if (!previous.empty() && v < previous[i] - 2e-3)
+      {
+        ++darker;
+      }
+    }
+    std::cout << label << ", " << bounces << " bounces: pixels min " << all.Min << " mean "
+              << all.Mean() << " max " << all.Max << " (expected " << expected << ", limit "
+              << limit << "; mean/expected " << all.Mean() / expected << ", worst relative error "
+              << worst << "); indirect mean " << ind.Mean() << " (expected "
+              << expected - E << "); pixels darker than with fewer bounces: " << darker
+              << std::endl;
+    if (bounces == 10)
+    {
+      SavePng(composite, size, size, defaults ? "FurnaceDefaults" : "Furnace");
+    }
+    // half floats round to 1/1024 relative
+    if (all.Max > limit * 1.002)
+    {
+      std::cerr << "FAILED: " << label << ": pixels brighter than the furnace limit" << std::endl;
+      ok = false;
+    }
+    if (darker > 0)
+    {
+      std::cerr << "FAILED: " << label << ": pixels darker with more bounces" << std::endl;
+      ok = false;
+    }
+    // every pixel within a few percent of the series at this bounce count (measured: 0.235 with
+    // AO off, the box's corners; 0.376 at the defaults, AO multiplying the emitters' own light)
+    ok = Within(std::string(label) + ", " + std::to_string(bounces) +
+           " bounces, largest relative error", worst, 0.03, defaults ? 0.40 : 0.26) && ok;
+    // measured: mean 0.911 of the series with AO off, 0.741 at the defaults
+    ok = Within(std::string(label) + ", " + std::to_string(bounces) + " bounces, error of the mean",
+           std::abs(all.Mean() / expected - 1.0), 0.03, defaults ? 0.28 : 0.12) && ok;
+    previous = current;
+  }
+  return ok ? EXIT_SUCCESS : EXIT_FAILURE;
+}
+
+//------------------------------------------------------------------------------
+// One emissive square over a white plane, no light.
+int AreaLightCase()
+{
+  const double L = 3.0, rho = 0.8, h = 1.0, half = 0.6;
+  const int size = 120;
+  View view(size, 64);
+  view.Renderer->AutomaticLightCreationOff();
+  voxelgi_test::AddQuad(view.Renderer, dvec3(-2, 0, -2), dvec3(-2, 0, 2), dvec3(2, 0, -2), rho, rho, rho);
+  vtkActor* panel = voxelgi_test::AddQuad(view.Renderer, dvec3(-half, h, -half),
+    dvec3(half, h, -half), dvec3(-half, h, half), 1.0, 1.0, 1.0);
+  MakeEmitter(panel, L, false);
+  view.Aim(dvec3(0.0, 2.0, 4.6), dvec3(0.0, 0.0, 0.2), 40.0);
+  vtkNew<vtkFloatArray> composite, indirect;
+  VOXELGI_CHECK(view.Render(composite, indirect), "GI did not run");
+  SavePng(composite, size, size, "AreaLight");
+
+  // plane pixels not hidden by the panel, away from the plane's edges
+  Stats ratio, under, measured, expected;
+  for (int y = 0; y < size; ++y)
+  {
+    for (int x = 0; x < size; ++x)
+    {
+      dvec3 o, d;
+      PixelRay(view.Renderer, x, y, o, d);
+      if (d.y >= -1e-6)
+      {
+        continue;
+      }
+      const double t = -o.y / d.y;
+      const dvec3 p = o + t * d;
+      const double tp = (h - o.y) / d.y;
+      const dvec3 q = o + tp * d;
+      const bool hidden = tp > 0.0 && tp < t && std::abs(q.x) <= half + 0.05 && std::abs(q.z) <= half + 0.05;
+      if (hidden || std::abs(p.x) > 1.6 || std::abs(p.z) > 1.6)
+      {
+        continue;
+      }
+      const double F = RectangleFormFactor(p.x, p.z, -half, half, -half, half, h);
+      const double truth = rho * L * F;
+      const double v = composite->GetComponent(static_cast<vtkIdType>(y) * size + x, 0);
+      ratio.Add(v / truth);
+      measured.Add(v);
+      expected.Add(truth);
+      if (std::abs(p.x) < half && std::abs(p.z) < half)
+      {
+        under.Add(v / truth);
+      }
+    }
+  }
+  std::cout << "area light: " << ratio.N << " plane pixels; measured mean " << measured.Mean()
+            << " vs rho L F mean " << expected.Mean() << " (ratio of means "
+            << measured.Mean() / expected.Mean() << "); per-pixel ratio min " << ratio.Min
+            << " mean " << ratio.Mean() << " max " << ratio.Max << "; under the panel ("
+            << under.N << " px) ratio min " << under.Min << " mean " << under.Mean() << " max "
+            << under.Max << "; rho L F at the centre "
+            << rho * L * RectangleFormFactor(0, 0, -half, half, -half, half, h) << std::endl;
+  VOXELGI_CHECK(ratio.N > 500, "too few plane pixels in view");
+  VOXELGI_CHECK(under.N > 20, "too few plane pixels under the panel in view");
+  bool ok = true;
+  // measured: mean 0.883 of rho L F; under the panel 0.76 .. 1.07
+  ok = Within("area light, error of the plane's mean radiance",
+         std::abs(measured.Mean() / expected.Mean() - 1.0), 0.10, 0.15) && ok;
+  ok = Within("area light, largest error under the panel",
+         std::max(1.0 - under.Min, under.Max - 1.0), 0.20, 0.30) && ok;
+  return ok ? EXIT_SUCCESS : EXIT_FAILURE;
+}
+
+//------------------------------------------------------------------------------
+// Floor [-3, 3]^2 (albedo rhoFloor) lit straight down by a directional light of intensity 1.
+vtkActor* AddLitFloor(vtkRenderer* renderer, double rhoFloor)
+{
+  vtkActor* floor = voxelgi_test::AddQuad(
+    renderer, dvec3(-3, 0, -3), dvec3(-3, 0, 3), dvec3(3, 0, -3), rhoFloor, rhoFloor, rhoFloor);
+  vtkNew<vtkLight> sun;
+  sun->SetLightTypeToSceneLight();
+  sun->SetPositional(false);
+  sun->SetPosition(0.0, 10.0, 0.0);
+  sun->SetFocalPoint(0.0, 0.0, 0.0);
+  sun->SetIntensity(1.0);
+  renderer->AddLight(sun);
+  return floor;
+}
+
+vtkActor* AddBlock(vtkRenderer* renderer, const dvec3& lo, const dvec3& hi, double rho)
+{
+  vtkNew<vtkCubeSource> cube;
+  cube->SetBounds(lo.x, hi.x, lo.y, hi.y, lo.z, hi.z);
+  return vtkVoxelGIScenes::AddSource(renderer, cube, rho, rho, rho);
+}
+
+int LitByFloorCase()
+{
+  const double rhoFloor = 0.8, rhoBlock = 0.8;
+  const dvec3 lo(-0.75, 0.0, -0.75), hi(0.75, 1.5, 0.75);
+  const int size = 120;
+  View view(size, 64);
+  AddLitFloor(view.Renderer, rhoFloor);
+  AddBlock(view.Renderer, lo, hi, rhoBlock);
+  view.Aim(dvec3(0.0, 0.75, 5.0), dvec3(0.0, 0.75, 0.0), 30.0);
+  vtkNew<vtkFloatArray> composite, indirect;
+  VOXELGI_CHECK(view.Render(composite, indirect), "GI did not run");
+  SavePng(composite, size, size, "LitByFloor");
+
+  // the +z face, rows by height: measured against rho_b F(y) L_floor with L_floor = rho_f x 1
+  const int bands = 6;
+  Stats band[bands], truthBand[bands], ratio;
+  for (int y = 0; y < size; ++y)
+  {
+    for (int x = 0; x < size; ++x)
+    {
+      dvec3 o, d;
+      PixelRay(view.Renderer, x, y, o, d);
+      const double t = (hi.z - o.z) / d.z;
+      const dvec3 p = o + t * d;
+      // inside the face, a little away from its edges
+      if (!(t > 0.0) || std::abs(p.x) > 0.65 || p.y < 0.02 || p.y > 1.45)
+      {
+        continue;
+      }
+      const int b = std::min(bands - 1, static_cast<int>(p.y / 1.5 * bands));
+      const double v = composite->GetComponent(static_cast<vtkIdType>(y) * size + x, 0);
+      band[b].Add(v);
+      // lit floor in front of the face (under the block it is dark, the face does not see it)
+      const double F = FloorFormFactor(dvec3(p.x, p.y, hi.z), dvec3(0, 0, 1), -3.0, 3.0, hi.z, 3.0);
+      const double truth = rhoBlock * F * rhoFloor;
+      truthBand[b].Add(truth);
+      ratio.Add(v / truth);
+    }
+  }
+  VOXELGI_CHECK(ratio.N > 300, "too few face pixels in view");
+  std::cout << "lit by the floor: " << ratio.N << " face pixels, measured / (rho_b F rho_f I) min "
+            << ratio.Min << " mean " << ratio.Mean() << " max " << ratio.Max << std::endl;
+  bool ok = true;
+  for (int b = 0; b < bands; ++b)
+  {
+    std::cout << "  height " << (b + 0.5) * 1.5 / bands << ": measured " << band[b].Mean()
+              << " (min " << band[b].Min << "), expected " << truthBand[b].Mean()
+              << ", ratio " << band[b].Mean() / truthBand[b].Mean() << std::endl;
+    // second-order light (face -> floor -> face) adds a few percent to the expectation;
+    // measured: 1.11 (top) .. 1.49 (next to the floor, seen too early through wide samples)
+    ok = Within("lit by the floor, error at height " + std::to_string((b + 0.5) * 1.5 / bands),
+           std::abs(band[b].Mean() / truthBand[b].Mean() - 1.0), 0.25, 0.6) && ok;
+  }
+  if (ratio.Min < 0.5)
+  {
+    std::cerr << "FAILED: lit by the floor: face pixels darker than half the form factor's light" << std::endl;
+    ok = false;
+  }
+  return ok ? EXIT_SUCCESS : EXIT_FAILURE;
+}
+
+//------------------------------------------------------------------------------
+// Contact: the floor around a small block, with and without the block.
+int ContactCase(double rhoBlock, const char* name)
+{
+  const double rhoFloor = 0.8;
+  const dvec3 lo(-0.4, 0.0, -0.4), hi(0.4, 0.5, 0.4);
+  const int size = 120;
+  View view(size, 64);
+  AddLitFloor(view.Renderer, rhoFloor);
+  vtkActor* block = AddBlock(view.Renderer, lo, hi, rhoBlock);
+  // a second, far block keeps the grid the same with and without the first
+  AddBlock(view.Renderer, dvec3(2.6, 0.0, -2.9), dvec3(2.9, 0.5, -2.6), 0.0);
+  view.Aim(dvec3(0.0, 3.0, 2.6), dvec3(0.0, 0.0, 0.0), 30.0);
+  vtkNew<vtkFloatArray> with, without, indirect;
+  VOXELGI_CHECK(view.Render(with, indirect), "GI did not run");
+  SavePng(with, size, size, name);
+  const double voxel = view.GI->GetGridVoxelSize();
+  block->SetVisibility(false);
+  VOXELGI_CHECK(view.Render(without, nullptr), "GI did not run without the block");
+
+  // Light straight down: the block's vertical faces get only what the floor reflects to
+  // them, at most rho_b rho_f I / 2 (half their hemisphere is floor); the floor next to them
+  // gets at most half its hemisphere's worth of that back: a relative excess k / (1 - k)
+  // with k = rho_f rho_b / 4 over all orders. A black block reflects nothing: no excess.
+  const double k = rhoFloor * rhoBlock / 4.0;
+  const double bound = k / (1.0 - k);
+  Stats excess, near;
+  int brighter = 0;
+  for (int y = 0; y < size; ++y)
+  {
+    for (int x = 0; x < size; ++x)
+    {
+      dvec3 o, d;
+      PixelRay(view.Renderer, x, y, o, d);
+      if (HitBox(o, d, lo, hi) >= 0.0 || d.y >= 0.0)
+      {
+        continue;
+      }
+      const dvec3 p = o - o.y / d.y * d;
+      const double gap = std::max(std::abs(p.x) - hi.x, std::abs(p.z) - hi.z);
+      if (gap <= 0.0 || gap > 4.0 * voxel)
+      {
+        continue;
+      }
+      const vtkIdType i = static_cast<vtkIdType>(y) * size + x;
+      const double a = with->GetComponent(i, 0), b = without->GetComponent(i, 0);
+      excess.Add(a / b - 1.0);
+      near.Add(a);
+      if (a > b * (1.0 + bound) + 1e-3)
+      {
+        ++brighter;
+      }
+    }
+  }
+  VOXELGI_CHECK(excess.N > 100, "too few floor pixels around the block");
+  std::cout << name << " (block albedo " << rhoBlock << "): " << excess.N
+            << " floor pixels within 4 voxels of the block; with / without - 1: min "
+            << excess.Min << " mean " << excess.Mean() << " max " << excess.Max
+            << " (physical bound " << bound << "); floor radiance there min " << near.Min
+            << " max " << near.Max << " (lit floor rho_f I = " << rhoFloor
+            << "); pixels above the bound: " << brighter << std::endl;
+  if (brighter > 0)
+  {
+    std::cerr << "FAILED: " << name << ": the floor next to the block is brighter than "
+              << "without it, beyond what the block can reflect" << std::endl;
+    return EXIT_FAILURE;
+  }
+  return EXIT_SUCCESS;
+}
+
+struct Case
+{
+  const char* Name;
+  std::function<int()> Run;
+};
+}
+
+int TestGIRadiometry(int argc, char* argv[])
+{
+  const Case cases[] = {
+    { "Furnace", [] { return FurnaceCase(false); } },
+    { "FurnaceDefaults", [] { return FurnaceCase(true); } },
+    { "AreaLight", AreaLightCase },
+    { "LitByFloor", LitByFloorCase },
+    { "ContactBlack", [] { return ContactCase(0.0, "ContactBlack"); } },
+    { "ContactWhite", [] { return ContactCase(0.8, "ContactWhite"); } },
+  };
+  std::vector<std::string> selected;
+  for (int i = 1; i < argc; ++i)
+  {
+    if (std::strcmp(argv[i], "-T") == 0 && i + 1 < argc)
+    {
+      OutputDirectory = argv[++i];
+    }
+    else if (argv[i][0] != '-')
+    {
+      selected.emplace_back(argv[i]);
+    }
+    else if (i + 1 < argc && argv[i + 1][0] != '-')
+    {
+      ++i; // the value of another option (-D, -V)
+    }
+  }
+  int failed = 0, ran = 0;
+  for (const Case& c : cases)
+  {
+    if (!selected.empty() && std::find(selected.begin(), selected.end(), c.Name) == selected.end())
+    {
+      continue;
+    }
+    ++ran;
+    std::cout << "== " << c.Name << std::endl;
+    if (c.Run() != EXIT_SUCCESS)
+    {
+      std::cerr << "ERROR: case " << c.Name << " failed" << std::endl;
+      ++failed;
+    }
+  }
+  if (ran == 0)
+  {
+    std::cerr << "ERROR: no case named on the command line exists" << std::endl;
+    return EXIT_FAILURE;
+  }
+  return failed ? EXIT_FAILURE : EXIT_SUCCESS;
+}
