@@ -23,6 +23,11 @@ Composite::~Composite() = default;
 
 bool Composite::Prepare(const Frame& frame, std::string& error)
 {
+  error = ImageSizeError("the composite image", frame.Width, frame.Height);
+  if (!error.empty())
+  {
+    return false;
+  }
   if (!this->Color)
   {
     this->Color = NewImageTexture(frame.Window, GL_RGBA32F, frame.Width, frame.Height);
@@ -80,8 +85,14 @@ bool Composite::Read(
     return false;
   }
   renWin->MakeCurrent();
-  w = texture->GetWidth();
-  h = texture->GetHeight();
+  // GL writes the texture as it holds it: size the buffer from that, never from what
+  // vtkTextureObject was last asked for (a resize GL refused keeps the old storage).
+  StoredSize(texture, w, h);
+  if (w <= 0 || h <= 0 || w != static_cast<int>(texture->GetWidth()) ||
+    h != static_cast<int>(texture->GetHeight()))
+  {
+    return false; // not the image of the last composite
+  }
   rgba.resize(static_cast<std::size_t>(w) * h * 4);
   texture->Activate();
   glPixelStorei(GL_PACK_ALIGNMENT, 1);

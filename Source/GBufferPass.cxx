@@ -33,10 +33,15 @@ GBufferPass::GBufferPass()
 GBufferPass::~GBufferPass() = default;
 
 //------------------------------------------------------------------------------
-bool GBufferPass::Prepare(const Frame& frame, std::string&)
+bool GBufferPass::Prepare(const Frame& frame, std::string& error)
 {
   const int width = frame.Width;
   const int height = frame.Height;
+  error = ImageSizeError("the G-buffer", width, height);
+  if (!error.empty())
+  {
+    return false;
+  }
   if (!this->Framebuffer)
   {
     vtkOpenGLRenderWindow* renWin = frame.Window;

@@ -523,6 +523,43 @@ void StageTimer::Release()
 }
 
 //------------------------------------------------------------------------------
+std::string ImageSizeError(const char* what, int width, int height)
+{
+  GLint texture = 0;
+  GLint framebuffer[2] = { 0, 0 };
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &texture);
+  glGetIntegerv(GL_MAX_FRAMEBUFFER_WIDTH, framebuffer);
+  glGetIntegerv(GL_MAX_FRAMEBUFFER_HEIGHT, framebuffer + 1);
+  const int size[2] = { width, height };
+  for (int axis = 0; axis < 2; ++axis)
+  {
+    // The images are textures and framebuffer attachments: the smaller limit applies.
+    const bool byFramebuffer = framebuffer[axis] > 0 && framebuffer[axis] < texture;
+    const GLint limit = byFramebuffer ? framebuffer[axis] : texture;
+    if (limit > 0 && size[axis] > limit)
+    {
+      const char* name = !byFramebuffer ? "GL_MAX_TEXTURE_SIZE"
+        : axis == 0                     ? "GL_MAX_FRAMEBUFFER_WIDTH"
+                                        : "GL_MAX_FRAMEBUFFER_HEIGHT";
+      return std::string(what) + " is " + std::to_string(width) + " x " +
+        std::to_string(height) + " pixels, larger than this OpenGL's " + name + " " +
+        std::to_string(limit) + " (its images cannot be allocated)";
+    }
+  }
+  return std::string();
+}
+
+void StoredSize(vtkTextureObject* texture, int& width, int& height)
+{
+  GLint w = 0, h = 0;
+  texture->Activate();
+  glGetTexLevelParameteriv(texture->GetTarget(), 0, GL_TEXTURE_WIDTH, &w);
+  glGetTexLevelParameteriv(texture->GetTarget(), 0, GL_TEXTURE_HEIGHT, &h);
+  texture->Deactivate();
+  width = w;
+  height = h;
+}
+
 void ContextVersion(int& major, int& minor)
 {
   GLint values[2] = { 0, 0 };

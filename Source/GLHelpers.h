@@ -259,6 +259,16 @@ vtkShaderProgram* ReadyQuad(
 vtkSmartPointer<vtkTextureObject> NewImageTexture(vtkOpenGLRenderWindow* renWin,
   int internalFormat, int width, int height, int components = 4);
 
+/// Empty when the current context can make (and attach) `width` x `height` 2D images, else
+/// a message naming the size and the GL limit it exceeds (GL_MAX_TEXTURE_SIZE, or a smaller
+/// GL_MAX_FRAMEBUFFER_WIDTH / HEIGHT). `what` names the image ("the viewport").
+std::string ImageSizeError(const char* what, int width, int height);
+
+/// The size of level 0 of a 2D texture as GL holds it. vtkTextureObject remembers the size it
+/// was last asked for, even when GL refused it (a resize beyond the limits fails and keeps
+/// the old storage): read-backs must be sized from this one.
+void StoredSize(vtkTextureObject* texture, int& width, int& height);
+
 /// The current context's OpenGL version.
 void ContextVersion(int& major, int& minor);
 

@@ -105,15 +105,14 @@ void ShadowMaps::Run(const Frame& frame, const LightBlock& lights)
     return;
   }
   ScopedStage stage(*frame.Clock, vtkVoxelGIPass::STAGE_SHADOW_MAPS);
-  vtkRenderer* renderer = frame.Renderer;
+  // The casters draw through a renderer of ours whose camera is the light's: the user's
+  // renderer and camera are left alone (see ViewRenderer).
+  vtkRenderer* renderer = this->View.Attach(frame.Window);
+  vtkCamera* camera = this->View.GetCamera();
   const VoxelGrid& grid = frame.Grid;
   const int size = this->Maps.Size();
   const std::vector<vtkLight*>& used = lights.GetLights();
   vtkOpenGLState* ostate = frame.Window->GetState();
-  vtkNew<vtkCamera> camera;
-  vtkCamera* userCamera = renderer->GetActiveCamera();
-  userCamera->Register(nullptr);
-  renderer->SetActiveCamera(camera);
   ostate->PushFramebufferBindings();
   {
     vtkOpenGLState::ScopedglViewport viewport(ostate);
@@ -165,8 +164,6 @@ void ShadowMaps::Run(const Frame& frame, const LightBlock& lights)
     }
   }
   ostate->PopFramebufferBindings();
-  renderer->SetActiveCamera(userCamera);
-  userCamera->UnRegister(nullptr);
 }
 
 }

@@ -8,6 +8,7 @@
 #define VoxelGIShadowMaps_h
 
 #include "GLHelpers.h"
+#include "ViewRenderer.h" // for ViewRenderer
 #include "shader_interface.h"
 
 #include <string>
@@ -39,9 +40,14 @@ public:
   const float* GetMatrices() const { return this->Matrices; }
 
   ShadowMapArray Maps;
-  void ReleaseGraphicsResources(vtkWindow*) { this->Maps.Release(); }
+  void ReleaseGraphicsResources(vtkWindow*)
+  {
+    this->Maps.Release();
+    this->View.Release();
+  }
 
 private:
+  ViewRenderer View; // draws through each light's camera
   int Layers[MaxLights];
   float Matrices[16 * MaxLights];
 };

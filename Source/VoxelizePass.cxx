@@ -8,6 +8,7 @@
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLRenderer.h"
 #include "vtkOpenGLState.h"
 #include "vtkProp.h"
 #include "vtkRenderState.h"
@@ -43,6 +44,7 @@ void Barrier()
 }
 }
 
+//------------------------------------------------------------------------------
 VoxelizePass::VoxelizePass() = default;
 VoxelizePass::~VoxelizePass() = default;
 
@@ -144,11 +146,10 @@ void VoxelizePass::Run(const Frame& frame)
   }
   this->AimCamera(frame);
 
-  vtkRenderer* renderer = frame.Renderer;
+  // The user's renderer and its camera are left alone (observers of its ActiveCameraEvent
+  // may render other windows or delete props): the props draw through a renderer of ours.
+  this->View.Attach(frame.Window);
   vtkOpenGLState* ostate = frame.Window->GetState();
-  vtkCamera* userCamera = renderer->GetActiveCamera();
-  userCamera->Register(this);
-  renderer->SetActiveCamera(this->Camera);
   ostate->PushFramebufferBindings();
   ostate->vtkglBindFramebuffer(
     GL_FRAMEBUFFER, this->Framebuffer.Prepare(this->Resolution, this->Resolution));
@@ -183,8 +184,6 @@ void VoxelizePass::Run(const Frame& frame)
     }
   }
   ostate->PopFramebufferBindings();
-  renderer->SetActiveCamera(userCamera);
-  userCamera->UnRegister(this);
 
   // Line and point primitives of mixed polydata cannot feed the triangle geometry shader;
   // GL rejects those draws (they have no area to voxelize). Do not leave the errors to VTK.
@@ -198,16 +197,17 @@ void VoxelizePass::AimCamera(const Frame& frame)
   // model, shift-scale and grid matrices in double precision for us.
   const glm::dvec3 center = frame.Grid.Center();
   const double half = 0.5 * frame.Grid.Size();
-  this->Camera->SetFocalPoint(center.x, center.y, center.z);
-  this->Camera->SetPosition(center.x, center.y, center.z + half);
-  this->Camera->SetViewUp(0.0, 1.0, 0.0);
+  vtkCamera* camera = this->View.GetCamera();
+  camera->SetFocalPoint(center.x, center.y, center.z);
+  camera->SetPosition(center.x, center.y, center.z + half);
+  camera->SetViewUp(0.0, 1.0, 0.0);
   vtkNew<vtkMatrix4x4> projection;
   projection->SetElement(0, 0, 1.0 / half);
   projection->SetElement(1, 1, 1.0 / half);
   projection->SetElement(2, 2, 1.0 / half);
   projection->SetElement(2, 3, 1.0);
-  this->Camera->SetExplicitProjectionTransformMatrix(projection);
-  this->Camera->SetUseExplicitProjectionTransformMatrix(true);
+  camera->SetExplicitProjectionTransformMatrix(projection);
+  camera->SetUseExplicitProjectionTransformMatrix(true);
 }
 
 void VoxelizePass::Draw(const Frame& frame, std::vector<vtkProp*>& props, bool staticPass)
@@ -215,7 +215,7 @@ void VoxelizePass::Draw(const Frame& frame, std::vector<vtkProp*>& props, bool s
   ScopedStage stage(*frame.Clock,
     staticPass ? vtkVoxelGIPass::STAGE_VOXELIZE_STATIC : vtkVoxelGIPass::STAGE_VOXELIZE_DYNAMIC);
   this->StaticPass = staticPass;
-  vtkRenderState state(frame.Renderer);
+  vtkRenderState state(this->View.Attach(frame.Window));
   state.SetPropArrayAndCount(props.data(), static_cast<int>(props.size()));
   this->Render(&state);
   Barrier();
@@ -378,6 +378,7 @@ void VoxelizePass::ReleaseGraphicsResources(vtkWindow*)
   this->ClearProgram.Release();
   this->ResolveProgram.Release();
   this->Framebuffer.Release();
+  this->View.Release();
   this->Resolution = 0;
 }
 

@@ -16,6 +16,7 @@
 #include "shader_interface.h"
 
 #include "vtkNew.h"              // for vtkNew
+#include "ViewRenderer.h"         // for ViewRenderer
 #include "vtkOpenGLRenderPass.h" // for the superclass
 
 #include <array>
@@ -41,7 +42,8 @@ public:
   bool Prepare(const Frame& frame, std::string& error);
   /// Clear, render the frame's actors (the static ones only for a full update), resolve.
   void Run(const Frame& frame);
-  /// Render the state's props into the accumulators (Run sets up camera and GL state).
+  /// Render the state's props into the accumulators (Run sets up the view renderer, whose
+  /// camera is the grid's, and the GL state).
   void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* window) override;
 
@@ -103,7 +105,7 @@ private:
   ComputeProgram ClearProgram;
   ComputeProgram ResolveProgram;
   EmptyFramebuffer Framebuffer;
-  vtkNew<vtkCamera> Camera;
+  ViewRenderer View; // draws through the grid camera
   vtkTimeStamp ShaderStageTime;
 };
 

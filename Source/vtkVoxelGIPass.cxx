@@ -76,6 +76,7 @@ struct vtkVoxelGIPass::Internals
   bool ContextChecked = false;
   bool ContextOk = false;
   bool HasConservativeRaster = false;
+  int RefusedSize[2] = { 0, 0 }; // the viewport size last refused as too large (said once)
 };
 
 //------------------------------------------------------------------------------
@@ -320,8 +321,25 @@ void vtkVoxelGIPass::Render(const vtkRenderState* s)
   {
     this->WatchWindow(renWin);
     this->BeginFrame(s);
-    this->GIActive =
-      this->UpdateVoxels(voxelsChanged) && this->UpdateRadiance(voxelsChanged, radianceChanged);
+    // Every image of the frame has the viewport's size: beyond GL's limits none can be made.
+    const std::string tooLarge =
+      voxelgi::ImageSizeError("the viewport", in.Frame.Width, in.Frame.Height);
+    if (!tooLarge.empty())
+    {
+      if (in.RefusedSize[0] != in.Frame.Width || in.RefusedSize[1] != in.Frame.Height)
+      {
+        vtkErrorMacro(<< "Voxel GI disabled for this frame: " << tooLarge
+                      << "; rendering without GI.");
+        in.RefusedSize[0] = in.Frame.Width;
+        in.RefusedSize[1] = in.Frame.Height;
+      }
+    }
+    else
+    {
+      in.RefusedSize[0] = in.RefusedSize[1] = 0;
+      this->GIActive =
+        this->UpdateVoxels(voxelsChanged) && this->UpdateRadiance(voxelsChanged, radianceChanged);
+    }
   }
 
   const bool voxelView = this->DebugView >= DEBUG_VIEW_VOXEL_ALBEDO &&

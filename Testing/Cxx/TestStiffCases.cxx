@@ -9,6 +9,7 @@
 #include "vtkVoxelGIScenes.h"
 
 #include "vtkActor.h"
+#include "vtkActorCollection.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
@@ -18,6 +19,7 @@
 #include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
+#include "vtkMapper.h"
 #include "vtkNew.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOutputWindow.h"
@@ -30,6 +32,10 @@
 #include "vtkRenderer.h"
 #include "vtkSphereSource.h"
 #include "vtkUnsignedCharArray.h"
+#include "vtkOpenGLState.h"
+#include "vtk_glew.h"
+
+#include <dlfcn.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -631,6 +637,225 @@ const std::map<std::string, std::function<int()>>& Cases()
         VOXELGI_CHECK(s.Log.Has("No delegate pass"), "no message: " << s.Log.Text);
         VOXELGI_CHECK(s.Log.Text.find("No delegate pass") == s.Log.Text.rfind("No delegate pass"),
           "the message repeats every frame");
+        return EXIT_SUCCESS;
+      } },
+    { "TextureSizeLimit",
+      [] {
+        // Issue 19, crash 1: a viewport beyond GL_MAX_TEXTURE_SIZE (either axis), a read-back
+        // after every frame (a heap overflow before). GI must refuse such frames with one
+        // clear message per size, add no GL error to VTK's own, return no image; back at a
+        // normal size it must work again.
+        Scene s;
+        vtkVoxelGIScenes::AddCornellBox(s.Renderer);
+        s.Render();
+        auto* gl = vtkOpenGLRenderWindow::SafeDownCast(s.Window);
+        gl->MakeCurrent();
+        GLint max = 0;
+        gl->GetState()->vtkglGetIntegerv(GL_MAX_TEXTURE_SIZE, &max);
+        // The test does not link libOpenGL itself: take VTK's glGetError.
+        using GetError = GLenum (*)();
+        auto getError = reinterpret_cast<GetError>(dlsym(RTLD_DEFAULT, "glGetError"));
+        VOXELGI_CHECK(getError && max > 0, "no glGetError or GL_MAX_TEXTURE_SIZE");
+        while (getError() != GL_NO_ERROR)
+        {
+        }
+        std::cout << "GL_MAX_TEXTURE_SIZE " << max << std::endl;
+        struct Step
+        {
+          int Width, Height;
+        };
+        const int wide = max + max / 4; // 20480 where the limit is 16384
+        const Step steps[] = { { max, 4 }, { max + 1, 4 }, { max + 1, 4 }, { wide, 3 },
+          { 4, max + 1 }, { 80, 80 }, { max + 1, 4 }, { 80, 80 } };
+        // GL errors of a frame, before and after its renderer starts (GL keeps one flag per
+        // error code, so they are drained in between). VTK 9.1's window leaves 0x501 before
+        // the renderers when it resizes its own framebuffer beyond the limits, with or without
+        // the pass; once the renderer (and so the pass) runs, no error may be added.
+        struct Errors
+        {
+          GetError Get = nullptr;
+          int Before = 0;
+          int After = 0;
+          GLenum First = GL_NO_ERROR;
+          int Drain()
+          {
+            int n = 0;
+            for (GLenum e = this->Get(); e != GL_NO_ERROR && n < 64; e = this->Get())
+            {
+              this->First = n++ == 0 ? e : this->First;
+            }
+            return n;
+          }
+        };
+        Errors gi, vtk;
+        gi.Get = vtk.Get = getError;
+        void (*drainAtStart)(vtkObject*, unsigned long, void*, void*) =
+          [](vtkObject*, unsigned long, void* client, void*) {
+            Errors& e = *static_cast<Errors*>(client);
+            e.Before = e.Drain();
+          };
+        vtkNew<vtkCallbackCommand> onStart;
+        onStart->SetCallback(drainAtStart);
+        onStart->SetClientData(&gi);
+        s.Renderer->AddObserver(vtkCommand::StartEvent, onStart);
+        vtkNew<vtkCallbackCommand> onPlainStart;
+        onPlainStart->SetCallback(drainAtStart);
+        onPlainStart->SetClientData(&vtk);
+        Scene plain;
+        vtkVoxelGIScenes::AddCornellBox(plain.Renderer);
+        plain.Renderer->SetPass(nullptr);
+        plain.Render();
+        plain.Renderer->AddObserver(vtkCommand::StartEvent, onPlainStart);
+        for (const Step& step : steps)
+        {
+          const std::string before = s.Log.Text;
+          plain.Window->SetSize(step.Width, step.Height);
+          plain.Window->Render();
+          plain.Window->MakeCurrent();
+          vtk.After = vtk.Drain();
+          s.Window->SetSize(step.Width, step.Height);
+          s.Window->Render();
+          gl->MakeCurrent();
+          gi.First = GL_NO_ERROR;
+          gi.After = gi.Drain();
+          vtkNew<vtkFloatArray> image;
+          const bool read = s.GI->GetFloatImage(vtkVoxelGIPass::IMAGE_COMPOSITE, image);
+          const std::string added = s.Log.Text.substr(before.size());
+          std::cout << step.Width << " x " << step.Height << ": GI active " << s.GI->GetGIActive()
+                    << ", read back " << read << ", GL errors before / after the renderer "
+                    << gi.Before << " / " << gi.After << " (plain VTK " << vtk.Before << " / "
+                    << vtk.After << "), messages: " << added << std::endl;
+          VOXELGI_CHECK(gi.After == 0 && vtk.After == 0,
+            "GL error 0x" << std::hex << gi.First << " left behind by the frame");
+          const bool fits = step.Width <= max && step.Height <= max;
+          if (fits)
+          {
+            VOXELGI_CHECK(s.GI->GetGIActive() && read, "GI did not run again: " << added);
+            VOXELGI_CHECK(image->GetNumberOfTuples() ==
+                static_cast<vtkIdType>(step.Width) * step.Height,
+              "read back " << image->GetNumberOfTuples() << " pixels");
+            VOXELGI_CHECK(Bounded(s.GI), "non-finite values");
+            continue;
+          }
+          VOXELGI_CHECK(!s.GI->GetGIActive(), "GI ran beyond the texture size limit");
+          VOXELGI_CHECK(!read, "GetFloatImage returned an image of a refused frame");
+          const std::string size = std::to_string(step.Width) + " x " + std::to_string(step.Height);
+          const bool repeated = &step != steps && step.Width == (&step - 1)->Width &&
+            step.Height == (&step - 1)->Height;
+          if (repeated)
+          {
+            VOXELGI_CHECK(added.empty(), "the message repeats every frame: " << added);
+          }
+          else
+          {
+            VOXELGI_CHECK(added.find(size) != std::string::npos &&
+                added.find("GL_MAX_TEXTURE_SIZE " + std::to_string(max)) != std::string::npos &&
+                added.find("without GI") != std::string::npos,
+              "no clear message naming the size and the limit: " << added);
+            VOXELGI_CHECK(
+              added.find(size) == added.rfind(size), "more than one message: " << added);
+          }
+        }
+        return EXIT_SUCCESS;
+      } },
+    { "ActiveCameraObservers",
+      [] {
+        // Issue 19, crash 2: observers of the renderer's ActiveCameraEvent and of its camera
+        // that check the active camera, render another window and remove (and so delete) an
+        // actor. The pass must fire none of these events and never show its own cameras
+        // through the renderer, even to code that runs while it draws (mapper StartEvent).
+        Scene s;
+        vtkVoxelGIScenes::AddCornellBox(s.Renderer);
+        vtkNew<vtkLight> sun; // a directional light: it gets a shadow map
+        sun->SetLightTypeToSceneLight();
+        sun->SetPositional(false);
+        sun->SetPosition(0.3, 1.0, 0.6);
+        sun->SetFocalPoint(0.0, 0.0, 0.0);
+        sun->SetIntensity(0.5);
+        s.Renderer->AddLight(sun);
+        s.GI->SetLightOcclusion(vtkVoxelGIPass::LIGHT_OCCLUSION_SHADOW_MAPS);
+        s.Renderer->ResetCamera();
+        Scene other;
+        AddBox(other.Renderer, 0, 1, 0, 1, 0, 1);
+        other.Render();
+        struct Watch
+        {
+          vtkRenderer* Renderer = nullptr;
+          vtkCamera* Camera = nullptr;
+          vtkRenderWindow* Other = nullptr;
+          std::vector<vtkActor*> Victims;
+          int CameraEvents = 0;   // ActiveCameraEvent and camera events
+          int WrongCamera = 0;    // times anyone saw another camera than the user's
+          int MapperStarts = 0;
+        } watch;
+        watch.Renderer = s.Renderer;
+        watch.Camera = s.Renderer->GetActiveCamera();
+        watch.Other = other.Window;
+        for (int i = 0; i < 3; ++i)
+        {
+          vtkActor* victim = AddBox(s.Renderer, 0.1 + 0.1 * i, 0.15 + 0.1 * i, 0.1, 0.2, 0.1, 0.2);
+          watch.Victims.push_back(victim);
+        }
+        vtkNew<vtkCallbackCommand> onCamera;
+        onCamera->SetClientData(&watch);
+        onCamera->SetCallback([](vtkObject*, unsigned long, void* client, void*) {
+          Watch& w = *static_cast<Watch*>(client);
+          ++w.CameraEvents;
+          w.WrongCamera += w.Renderer->GetActiveCamera() != w.Camera ? 1 : 0;
+          w.Other->Render();
+          if (!w.Victims.empty())
+          {
+            w.Renderer->RemoveActor(w.Victims.back()); // its last reference: deleted
+            w.Victims.pop_back();
+          }
+        });
+        s.Renderer->AddObserver(vtkCommand::ActiveCameraEvent, onCamera);
+        watch.Camera->AddObserver(vtkCommand::ModifiedEvent, onCamera);
+        vtkNew<vtkCallbackCommand> onMapper;
+        onMapper->SetClientData(&watch);
+        onMapper->SetCallback([](vtkObject*, unsigned long, void* client, void*) {
+          Watch& w = *static_cast<Watch*>(client);
+          ++w.MapperStarts;
+          w.WrongCamera += w.Renderer->GetActiveCamera() != w.Camera ? 1 : 0;
+        });
+        vtkActorCollection* actors = s.Renderer->GetActors();
+        actors->InitTraversal();
+        while (vtkActor* actor = actors->GetNextActor())
+        {
+          actor->GetMapper()->AddObserver(vtkCommand::StartEvent, onMapper);
+        }
+        // The user's own changes reach the observers (which delete actors), then frames that
+        // voxelize and render shadow maps again: no event may come from the pass (before the
+        // fix: two ActiveCameraEvents per voxelization and per shadow-map update, with the
+        // pass's camera active, and a crash when the observer deleted an actor then).
+        for (int frame = 0; frame < 4; ++frame)
+        {
+          watch.Camera->Azimuth(5.0);
+          s.Renderer->SetActiveCamera(watch.Camera); // the same camera: no event
+          const int events = watch.CameraEvents;
+          const int starts = watch.MapperStarts;
+          if (frame == 2)
+          {
+            s.GI->Invalidate(); // everything voxelized and lit again
+          }
+          if (frame == 3)
+          {
+            sun->SetPosition(0.5, 1.0, 0.2); // shadow maps again
+          }
+          s.Window->Render();
+          std::cout << "frame " << frame << ": GI active " << s.GI->GetGIActive() << ", "
+                    << watch.CameraEvents - events << " camera events, "
+                    << watch.MapperStarts - starts << " mapper starts, " << watch.WrongCamera
+                    << " wrong cameras, " << watch.Victims.size() << " victims left" << std::endl;
+          VOXELGI_CHECK(s.GI->GetGIActive(), "GI did not run: " << s.Log.Text);
+          VOXELGI_CHECK(s.GI->GetStageRan(vtkVoxelGIPass::STAGE_SHADOW_MAPS) || frame == 1,
+            "no shadow maps rendered: the case does not test them");
+          VOXELGI_CHECK(watch.CameraEvents == events, "the frame fired camera events");
+          VOXELGI_CHECK(watch.MapperStarts > starts || frame == 1, "no mapper rendered");
+          VOXELGI_CHECK(watch.WrongCamera == 0, "the pass showed its own camera");
+          VOXELGI_CHECK(Bounded(s.GI), "non-finite values");
+        }
+        VOXELGI_CHECK(watch.Victims.empty(), "the observers did not delete the actors");
         return EXIT_SUCCESS;
       } },
     { "ManyActorsAndLights",
