@@ -23,11 +23,6 @@ Composite::~Composite() = default;
 
 bool Composite::Prepare(const Frame& frame, std::string& error)
 {
-  error = ImageSizeError("the composite image", frame.Width, frame.Height);
-  if (!error.empty())
-  {
-    return false;
-  }
   if (!this->Color)
   {
     this->Color = NewImageTexture(frame.Window, GL_RGBA32F, frame.Width, frame.Height);

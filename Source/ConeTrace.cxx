@@ -38,11 +38,6 @@ bool ConeTrace::Prepare(const Frame& frame, std::string& error)
   const double scale = frame.Config.TraceResolution;
   const int tw = std::max(1, static_cast<int>(std::ceil(frame.Width * scale)));
   const int th = std::max(1, static_cast<int>(std::ceil(frame.Height * scale)));
-  error = ImageSizeError("the traced image", tw, th);
-  if (!error.empty())
-  {
-    return false;
-  }
   for (TraceImages& images : this->History)
   {
     if (!images.Indirect)

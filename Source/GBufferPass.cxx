@@ -33,15 +33,10 @@ GBufferPass::GBufferPass()
 GBufferPass::~GBufferPass() = default;
 
 //------------------------------------------------------------------------------
-bool GBufferPass::Prepare(const Frame& frame, std::string& error)
+bool GBufferPass::Prepare(const Frame& frame, std::string&)
 {
   const int width = frame.Width;
   const int height = frame.Height;
-  error = ImageSizeError("the G-buffer", width, height);
-  if (!error.empty())
-  {
-    return false;
-  }
   if (!this->Framebuffer)
   {
     vtkOpenGLRenderWindow* renWin = frame.Window;

@@ -8,7 +8,6 @@
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
-#include "vtkOpenGLRenderer.h"
 #include "vtkOpenGLState.h"
 #include "vtkProp.h"
 #include "vtkRenderState.h"
@@ -146,9 +145,6 @@ void VoxelizePass::Run(const Frame& frame)
   }
   this->AimCamera(frame);
 
-  // The user's renderer and its camera are left alone (observers of its ActiveCameraEvent
-  // may render other windows or delete props): the props draw through a renderer of ours.
-  this->View.Attach(frame.Window);
   vtkOpenGLState* ostate = frame.Window->GetState();
   ostate->PushFramebufferBindings();
   ostate->vtkglBindFramebuffer(
@@ -215,6 +211,8 @@ void VoxelizePass::Draw(const Frame& frame, std::vector<vtkProp*>& props, bool s
   ScopedStage stage(*frame.Clock,
     staticPass ? vtkVoxelGIPass::STAGE_VOXELIZE_STATIC : vtkVoxelGIPass::STAGE_VOXELIZE_DYNAMIC);
   this->StaticPass = staticPass;
+  // The user's renderer and its camera are left alone (observers of its ActiveCameraEvent
+  // may render other windows or delete props): the props draw through a renderer of ours.
   vtkRenderState state(this->View.Attach(frame.Window));
   state.SetPropArrayAndCount(props.data(), static_cast<int>(props.size()));
   this->Render(&state);

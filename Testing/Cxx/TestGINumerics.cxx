@@ -74,15 +74,9 @@ int Furnace()
   const double emission = 1.0, rho = 0.5, limit = emission / (1.0 - rho);
   vtkNew<vtkRenderer> renderer;
   renderer->AutomaticLightCreationOff();
-  const double S = 4.0;
   // six inward-facing walls, all emissive
-  const dvec3 quads[6][3] = { { { 0, 0, 0 }, { 0, 0, S }, { S, 0, 0 } },
-    { { 0, S, 0 }, { S, S, 0 }, { 0, S, S } }, { { 0, 0, 0 }, { S, 0, 0 }, { 0, S, 0 } },
-    { { 0, 0, S }, { 0, S, S }, { S, 0, S } }, { { 0, 0, 0 }, { 0, S, 0 }, { 0, 0, S } },
-    { { S, 0, 0 }, { S, 0, S }, { S, S, 0 } } };
-  for (const auto& q : quads)
+  for (vtkActor* wall : voxelgi_test::AddClosedBox(renderer, 4.0, rho))
   {
-    vtkActor* wall = voxelgi_test::AddQuad(renderer, q[0], q[1], q[2], rho, rho, rho);
     vtkVoxelGIPass::SetPropEmission(wall, emission, emission, emission);
   }
   vtkNew<vtkRenderWindow> window;

@@ -256,14 +256,9 @@ int FurnaceCase(bool defaults)
   const int size = 64;
   View view(size, 32);
   view.Renderer->AutomaticLightCreationOff();
-  const double S = 4.0;
-  const dvec3 quads[6][3] = { { { 0, 0, 0 }, { 0, 0, S }, { S, 0, 0 } },
-    { { 0, S, 0 }, { S, S, 0 }, { 0, S, S } }, { { 0, 0, 0 }, { S, 0, 0 }, { 0, S, 0 } },
-    { { 0, 0, S }, { 0, S, S }, { S, 0, S } }, { { 0, 0, 0 }, { 0, S, 0 }, { 0, 0, S } },
-    { { S, 0, 0 }, { S, 0, S }, { S, S, 0 } } };
-  for (const auto& q : quads)
+  for (vtkActor* wall : voxelgi_test::AddClosedBox(view.Renderer, 4.0, rho))
   {
-    MakeEmitter(voxelgi_test::AddQuad(view.Renderer, q[0], q[1], q[2], rho, rho, rho), E, true);
+    MakeEmitter(wall, E, true);
   }
   if (!defaults)
   {

@@ -142,6 +142,21 @@ vtkActor* AddQuad(vtkRenderer* renderer, const glm::dvec3& o, const glm::dvec3& 
   return vtkVoxelGIScenes::AddSource(renderer, plane, r, g, b);
 }
 
+std::vector<vtkActor*> AddClosedBox(vtkRenderer* renderer, double size, double rho)
+{
+  const double S = size;
+  const glm::dvec3 quads[6][3] = { { { 0, 0, 0 }, { 0, 0, S }, { S, 0, 0 } },
+    { { 0, S, 0 }, { S, S, 0 }, { 0, S, S } }, { { 0, 0, 0 }, { S, 0, 0 }, { 0, S, 0 } },
+    { { 0, 0, S }, { 0, S, S }, { S, 0, S } }, { { 0, 0, 0 }, { 0, S, 0 }, { 0, 0, S } },
+    { { S, 0, 0 }, { S, 0, S }, { S, S, 0 } } };
+  std::vector<vtkActor*> walls;
+  for (const auto& q : quads)
+  {
+    walls.push_back(AddQuad(renderer, q[0], q[1], q[2], rho, rho, rho));
+  }
+  return walls;
+}
+
 int CornellRegressionTest(int argc, char* argv[], int debugView)
 {
   vtkNew<vtkRenderer> renderer;

@@ -5,6 +5,7 @@
 #include <glm/glm.hpp>
 
 #include <iostream>
+#include <vector>
 
 class vtkActor;
 class vtkAlgorithm;
@@ -39,6 +40,9 @@ int CornellRegressionTest(int argc, char* argv[], int debugView);
 /// Add a quad from `o` spanned by p1 - o and p2 - o (normal (p1 - o) x (p2 - o)).
 vtkActor* AddQuad(vtkRenderer* renderer, const glm::dvec3& o, const glm::dvec3& p1,
   const glm::dvec3& p2, double r, double g, double b);
+
+/// Add the six inward-facing walls of the box [0, size]^3, grey of albedo `rho`.
+std::vector<vtkActor*> AddClosedBox(vtkRenderer* renderer, double size, double rho);
 
 /// Prints a failure and returns false when the condition does not hold.
 #define VOXELGI_CHECK(condition, message)                                                    \
