@@ -398,7 +398,8 @@ void SceneScan::RefreshSignatures()
 }
 
 //------------------------------------------------------------------------------
-bool SceneScan::Unchanged(vtkRenderer* renderer, vtkMTimeType settingsTime)
+std::vector<unsigned long long> SceneScan::FrameKeyOf(
+  vtkRenderer* renderer, vtkMTimeType settingsTime)
 {
   std::vector<unsigned long long> key{ renderer->GetMTime(), settingsTime,
     renderer->GetActiveCamera()->GetMTime() };
@@ -413,9 +414,17 @@ bool SceneScan::Unchanged(vtkRenderer* renderer, vtkMTimeType settingsTime)
     key.push_back(actor && actor->GetMapper() ? ActorSignature(actor) : prop->GetMTime());
     key.push_back(prop->GetVisibility());
   }
-  const bool same = key == this->FrameKey;
-  this->FrameKey = std::move(key);
-  return same;
+  return key;
+}
+
+bool SceneScan::Unchanged(vtkRenderer* renderer, vtkMTimeType settingsTime) const
+{
+  return !this->FrameKey.empty() && FrameKeyOf(renderer, settingsTime) == this->FrameKey;
+}
+
+void SceneScan::RememberFrame(vtkRenderer* renderer, vtkMTimeType settingsTime)
+{
+  this->FrameKey = FrameKeyOf(renderer, settingsTime);
 }
 
 }

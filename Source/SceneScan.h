@@ -95,9 +95,13 @@ public:
   double GetMilliseconds() const { return this->Milliseconds; }
 
   /// Whether the image traced last frame can be presented again: nothing it depends on
-  /// (renderer, camera, viewport, props, the pass's settings as `settingsTime`) changed.
-  /// Remembers this frame's state for the next call.
-  bool Unchanged(vtkRenderer* renderer, vtkMTimeType settingsTime);
+  /// (renderer, camera, viewport, props, the pass's settings as `settingsTime`) changed
+  /// since RememberFrame().
+  bool Unchanged(vtkRenderer* renderer, vtkMTimeType settingsTime) const;
+  /// Remember the state the frame's image shows, once it is drawn: what VTK modifies while
+  /// drawing (a mapper creating its default lookup table, a pass giving a prop its keys) is
+  /// not a change of the scene.
+  void RememberFrame(vtkRenderer* renderer, vtkMTimeType settingsTime);
   /// Forget the remembered state (the next Unchanged() is false).
   void ForgetFrame() { this->FrameKey.clear(); }
 
@@ -105,6 +109,7 @@ public:
   static vtkMTimeType ActorSignature(vtkActor* actor);
 
 private:
+  static std::vector<unsigned long long> FrameKeyOf(vtkRenderer* renderer, vtkMTimeType settingsTime);
   /// Collect the visible opaque surface actors; false when there is none.
   bool Collect(vtkRenderer* renderer, std::vector<ActorRecord>& records, double bounds[6],
     std::vector<std::string>& warnings);

@@ -140,7 +140,7 @@ void ShadowMaps::Run(const Frame& frame, const LightBlock& lights)
       {
         if (record.Actor)
         {
-          record.Actor->RenderOpaqueGeometry(renderer);
+          this->Copies.Draw(record.Actor, renderer);
         }
       }
       // clip <- world <- grid, composed in double
@@ -164,6 +164,7 @@ void ShadowMaps::Run(const Frame& frame, const LightBlock& lights)
     }
   }
   ostate->PopFramebufferBindings();
+  this->Copies.Retain(*frame.Actors, frame.Window);
 }
 
 }

@@ -8,6 +8,7 @@
 #define VoxelGIShadowMaps_h
 
 #include "GLHelpers.h"
+#include "MapperCopies.h"
 #include "ViewRenderer.h" // for ViewRenderer
 #include "shader_interface.h"
 
@@ -40,14 +41,16 @@ public:
   const float* GetMatrices() const { return this->Matrices; }
 
   ShadowMapArray Maps;
-  void ReleaseGraphicsResources(vtkWindow*)
+  void ReleaseGraphicsResources(vtkWindow* window)
   {
     this->Maps.Release();
+    this->Copies.ReleaseGraphicsResources(window);
     this->View.Release();
   }
 
 private:
   ViewRenderer View; // draws through each light's camera
+  MapperCopies Copies; // depth-only draws never switch the user's mappers
   int Layers[MaxLights];
   float Matrices[16 * MaxLights];
 };

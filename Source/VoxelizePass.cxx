@@ -4,6 +4,7 @@
 #include "VoxelGIShaders.h"
 #include "vtkVoxelGIPass.h"
 
+#include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
@@ -180,6 +181,7 @@ void VoxelizePass::Run(const Frame& frame)
     }
   }
   ostate->PopFramebufferBindings();
+  this->Copies.Retain(*frame.Actors, frame.Window);
 
   // Line and point primitives of mixed polydata cannot feed the triangle geometry shader;
   // GL rejects those draws (they have no area to voxelize). Do not leave the errors to VTK.
@@ -226,7 +228,8 @@ void VoxelizePass::Render(const vtkRenderState* s)
   this->BindAccumulators();
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
-    this->NumberOfRenderedProps += s->GetPropArray()[i]->RenderOpaqueGeometry(s->GetRenderer());
+    this->NumberOfRenderedProps +=
+      this->Copies.Draw(vtkActor::SafeDownCast(s->GetPropArray()[i]), s->GetRenderer());
   }
   this->PostRender(s);
 }
@@ -363,7 +366,7 @@ void VoxelizePass::ReadFlags(std::vector<unsigned char>& flags) const
   this->FlagVolume.Read(GL_RED_INTEGER, GL_UNSIGNED_BYTE, flags.data());
 }
 
-void VoxelizePass::ReleaseGraphicsResources(vtkWindow*)
+void VoxelizePass::ReleaseGraphicsResources(vtkWindow* window)
 {
   for (auto& buffer : this->Accumulators)
   {
@@ -376,6 +379,7 @@ void VoxelizePass::ReleaseGraphicsResources(vtkWindow*)
   this->ClearProgram.Release();
   this->ResolveProgram.Release();
   this->Framebuffer.Release();
+  this->Copies.ReleaseGraphicsResources(window);
   this->View.Release();
   this->Resolution = 0;
 }

@@ -1,8 +1,8 @@
 /**
  * Voxelize stage: the voxel volumes and the internal render pass that fills them.
  *
- * Actors are rendered by their own VTK mappers, with this pass in their render-pass keys so
- * that it injects its shader code (voxelize.geom, voxelize.frag): every fragment adds its
+ * Actors are rendered by copies of their VTK mappers (MapperCopies: the user's mappers never
+ * switch shader code), with this pass in their render-pass keys so that it injects its code (voxelize.geom, voxelize.frag): every fragment adds its
  * unlit colour, geometric normal and emission to exact integer accumulators (one shader
  * storage buffer per channel), seen through an orthographic camera fitted to the grid cube.
  * A flag volume marks voxels written by static actors: dynamic actors skip them, and the
@@ -13,6 +13,7 @@
 #define VoxelGIVoxelizePass_h
 
 #include "GLHelpers.h"
+#include "MapperCopies.h"
 #include "shader_interface.h"
 
 #include "vtkNew.h"              // for vtkNew
@@ -106,6 +107,7 @@ private:
   ComputeProgram ResolveProgram;
   EmptyFramebuffer Framebuffer;
   ViewRenderer View; // draws through the grid camera
+  MapperCopies Copies; // draw the actors with this pass's shader code only
   vtkTimeStamp ShaderStageTime;
 };
 

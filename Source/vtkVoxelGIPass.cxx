@@ -355,6 +355,7 @@ void vtkVoxelGIPass::Render(const vtkRenderState* s)
     in.Frame.CameraOnly = traced && !voxelsChanged && !radianceChanged &&
       this->GetMTime() == in.TracedSettings;
     this->RenderGI(in.Frame.CameraOnly && unchanged);
+    in.Scan.RememberFrame(renderer, this->GetMTime());
   }
   if (this->GIActive && voxelView)
   {

@@ -1,17 +1,19 @@
 // Per-stage timing of vtkVoxelGIPass over scripted frame sequences (a benchmark, not a test).
 //
-//   VoxelGIBenchmark [--scene cornell|field|atrium] [--objects N] [--size WxH] [--resolution R]
-//                    [--frames F] [--warmup W] [--trace-scale S] [--multisamples N] [--egl]
-//                    [--temporal-reuse 0|1]
-//                    [--csv FILE]
-//                    [--json FILE] [--image FILE]
+//   VoxelGIBenchmark [--scene cornell|field|atrium|sphere] [--objects N] [--triangles N]
+//                    [--size WxH] [--resolution R] [--frames F] [--warmup W] [--trace-scale S]
+//                    [--multisamples N] [--egl] [--temporal-reuse 0|1]
+//                    [--sequences NAME,NAME,...] [--csv FILE] [--json FILE] [--image FILE]
 //
-// Scenes: the Cornell box (36 triangles), a field of N spheres and boxes, and an atrium of
-// Sponza scale (about 280k triangles: columns, arches, galleries, drapes, coloured).
+// Scenes: the Cornell box (36 triangles), a field of N spheres and boxes on a ground plane
+// (N + 1 actors), an atrium of Sponza scale (about 280k triangles: columns, arches,
+// galleries, drapes, coloured), and one tessellated sphere of about N triangles.
 // Sequences: static (nothing changes), orbit (camera only), light (one light moves),
 // one-moving (one dynamic actor moves), all-moving (every actor moves), and plain (GI off,
-// VTK alone, static). Each frame's wall time (after glFinish) and per-stage GPU times
-// (timer queries) go to the CSV; the JSON and the printed table hold medians per sequence.
+// VTK alone, static); --sequences runs some of them. Per frame: the wall time of Render()
+// with glFinish, its CPU time (Render() returning, without glFinish), the GPU time span of
+// the frame (two timestamp queries) and per-stage GPU times (timer queries) go to the CSV;
+// the JSON and the printed table hold medians per sequence.
 #include "vtkVoxelGIEGLRenderWindow.h"
 #include "vtkVoxelGIPass.h"
 #include "vtkVoxelGIScenes.h"
@@ -40,6 +42,8 @@
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 #include "vtkSphereSource.h"
+#include "vtkParametricEllipsoid.h"
+#include "vtk_glew.h"
 
 #include <algorithm>
 #include <chrono>
@@ -58,6 +62,8 @@ struct Options
 {
   std::string Scene = "cornell";
   int Objects = 64;
+  long long Triangles = 100000;
+  std::string Sequences; // comma-separated names; empty: all
   int Width = 640;
   int Height = 480;
   int Resolution = 128;
@@ -111,6 +117,27 @@ void AddField(vtkRenderer* renderer, int objects)
   camera->SetFocalPoint(side, 0.0, side);
   camera->SetPosition(side + 1.5 * side, 1.2 * side + 2.0, side + 2.0 * side + 3.0);
   renderer->ResetCameraClippingRange();
+}
+
+// One sphere of about `triangles` triangles (a parametric ellipsoid: two per grid cell) under a
+// directional light: the cost of voxelizing one mesh against its size.
+void AddSphere(vtkRenderer* renderer, long long triangles)
+{
+  const int n = std::max(4, static_cast<int>(std::lround(std::sqrt(triangles / 2.0))));
+  vtkNew<vtkParametricEllipsoid> ellipsoid;
+  vtkNew<vtkParametricFunctionSource> sphere;
+  sphere->SetParametricFunction(ellipsoid);
+  sphere->SetUResolution(n);
+  sphere->SetVResolution(n);
+  sphere->GenerateTextureCoordinatesOff();
+  vtkVoxelGIScenes::AddSource(renderer, sphere, 0.8, 0.5, 0.3);
+  vtkNew<vtkLight> sun;
+  sun->SetLightTypeToSceneLight();
+  sun->SetPositional(false);
+  sun->SetPosition(2.0, 4.0, 3.0);
+  sun->SetFocalPoint(0.0, 0.0, 0.0);
+  renderer->AddLight(sun);
+  renderer->ResetCamera();
 }
 
 // The GL renderer's name, from VTK's capability report (after a render).
@@ -245,6 +272,8 @@ bool Parse(int argc, char* argv[], Options& o)
     auto next = [&]() -> std::string { return i + 1 < argc ? argv[++i] : ""; };
     if (arg == "--scene") o.Scene = next();
     else if (arg == "--objects") o.Objects = std::atoi(next().c_str());
+    else if (arg == "--triangles") o.Triangles = std::atoll(next().c_str());
+    else if (arg == "--sequences") o.Sequences = next();
     else if (arg == "--size")
     {
       const std::string v = next();
@@ -268,7 +297,7 @@ bool Parse(int argc, char* argv[], Options& o)
     }
   }
   return o.Width > 0 && o.Height > 0 && o.Frames > 0 &&
-    (o.Scene == "cornell" || o.Scene == "field" || o.Scene == "atrium");
+    (o.Scene == "cornell" || o.Scene == "field" || o.Scene == "atrium" || o.Scene == "sphere");
 }
 }
 
@@ -277,11 +306,10 @@ int main(int argc, char* argv[])
   Options o;
   if (!Parse(argc, argv, o))
   {
-    std::cerr << "usage: VoxelGIBenchmark [--scene cornell|field|atrium] [--objects N] [--size WxH] "
-                 "[--resolution R] [--frames F] [--warmup W] [--trace-scale S] [--multisamples N] [--egl] "
-                 "[--temporal-reuse 0|1] "
-                 "[--csv FILE] [--json FILE] "
-                 "[--image FILE]"
+    std::cerr << "usage: VoxelGIBenchmark [--scene cornell|field|atrium|sphere] [--objects N] "
+                 "[--triangles N] [--size WxH] [--resolution R] [--frames F] [--warmup W] "
+                 "[--trace-scale S] [--multisamples N] [--egl] [--temporal-reuse 0|1] "
+                 "[--sequences NAME,...] [--csv FILE] [--json FILE] [--image FILE]"
               << std::endl;
     return EXIT_FAILURE;
   }
@@ -294,6 +322,10 @@ int main(int argc, char* argv[])
   else if (o.Scene == "atrium")
   {
     AddAtrium(renderer);
+  }
+  else if (o.Scene == "sphere")
+  {
+    AddSphere(renderer, o.Triangles);
   }
   else
   {
@@ -321,7 +353,7 @@ int main(int argc, char* argv[])
   std::cout << o.Scene << ": " << actors.size() << " actors, " << triangles << " triangles"
             << std::endl;
   // The mover: the Cornell box's short block, or the field's first object.
-  vtkActor* mover = actors[o.Scene == "cornell" ? 5 : 1];
+  vtkActor* mover = actors[o.Scene == "cornell" ? 5 : std::min<std::size_t>(1, actors.size() - 1)];
   vtkVoxelGIPass::SetPropDynamic(mover, true);
   vtkLight* light = vtkLight::SafeDownCast(renderer->GetLights()->GetItemAsObject(0));
 
@@ -381,40 +413,70 @@ int main(int argc, char* argv[])
     { "plain", [](int) {}, false },
   };
 
+  std::vector<const Sequence*> selected;
+  for (const Sequence& sequence : sequences)
+  {
+    if (o.Sequences.empty() || ("," + o.Sequences + ",").find("," + sequence.Name + ",") != std::string::npos)
+    {
+      selected.push_back(&sequence);
+    }
+  }
+
   std::ofstream csv(o.CSV);
-  csv << "sequence,frame,frame_ms";
+  csv << "sequence,frame,frame_ms,cpu_ms,gpu_span_ms";
   for (int s = 0; s < vtkVoxelGIPass::NUMBER_OF_STAGES; ++s)
   {
     csv << "," << vtkVoxelGIPass::GetStageName(s) << "_ms";
   }
   csv << ",stages_run\n";
 
+  // The frame's GPU time span: timestamps before and after Render() (the context is the
+  // window's throughout).
+  window->Render();
+  window->MakeCurrent();
+  GLuint spanQueries[2];
+  glGenQueries(2, spanQueries);
+  constexpr int Measured = 3; // frame, CPU, GPU span; then the stages
   std::map<std::string, std::vector<std::vector<double>>> samples; // per sequence: columns
-  for (const Sequence& sequence : sequences)
+  for (const Sequence* sequence : selected)
   {
-    gi->SetEnabled(sequence.GI);
-    auto& columns = samples[sequence.Name];
-    columns.assign(vtkVoxelGIPass::NUMBER_OF_STAGES + 1, {});
+    gi->SetEnabled(sequence->GI);
+    auto& columns = samples[sequence->Name];
+    columns.assign(vtkVoxelGIPass::NUMBER_OF_STAGES + Measured, {});
     for (int f = -o.Warmup; f < o.Frames; ++f)
     {
-      sequence.Step(f);
+      sequence->Step(f);
       window->WaitForCompletion();
+      window->MakeCurrent();
+      glQueryCounter(spanQueries[0], GL_TIMESTAMP);
       const auto start = std::chrono::steady_clock::now();
       window->Render();
+      const auto returned = std::chrono::steady_clock::now();
+      glQueryCounter(spanQueries[1], GL_TIMESTAMP);
       window->WaitForCompletion();
-      const double ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+      const auto finished = std::chrono::steady_clock::now();
+      GLuint64 stamps[2] = { 0, 0 };
+      glGetQueryObjectui64v(spanQueries[0], GL_QUERY_RESULT, &stamps[0]);
+      glGetQueryObjectui64v(spanQueries[1], GL_QUERY_RESULT, &stamps[1]);
       if (f < 0)
       {
         continue;
       }
-      csv << sequence.Name << "," << f << "," << ms;
-      columns[0].push_back(ms);
+      const double measured[Measured] = {
+        std::chrono::duration<double, std::milli>(finished - start).count(),
+        std::chrono::duration<double, std::milli>(returned - start).count(),
+        1e-6 * static_cast<double>(stamps[1] - stamps[0]) };
+      csv << sequence->Name << "," << f;
+      for (int m = 0; m < Measured; ++m)
+      {
+        csv << "," << measured[m];
+        columns[m].push_back(measured[m]);
+      }
       std::string ran;
       for (int s = 0; s < vtkVoxelGIPass::NUMBER_OF_STAGES; ++s)
       {
         csv << "," << gi->GetStageTime(s);
-        columns[s + 1].push_back(gi->GetStageTime(s));
+        columns[s + Measured].push_back(gi->GetStageTime(s));
         if (gi->GetStageRan(s))
         {
           ran += std::string(ran.empty() ? "" : "|") + vtkVoxelGIPass::GetStageName(s);
@@ -423,34 +485,44 @@ int main(int argc, char* argv[])
       csv << "," << ran << "\n";
     }
   }
+  glDeleteQueries(2, spanQueries);
 
   std::ofstream json(o.JSON);
-  json << "{\n  \"scene\": \"" << o.Scene << "\", \"triangles\": " << triangles << ", \"width\": "
-       << o.Width << ", \"height\": " << o.Height << ", \"resolution\": " << o.Resolution << ", \"trace_scale\": " << o.TraceScale << ", \"temporal_reuse\": " << o.TemporalReuse
-       << ", \"multisamples\": " << window->GetMultiSamples() << ", \"frames\": " << o.Frames << ",\n  \"renderer\": \"" << RendererName(window)
-       << "\",\n  \"median_ms\": {\n";
+  json << "{\n  \"scene\": \"" << o.Scene << "\", \"actors\": " << actors.size()
+       << ", \"triangles\": " << triangles << ", \"width\": " << o.Width
+       << ", \"height\": " << o.Height << ", \"resolution\": " << o.Resolution
+       << ", \"trace_scale\": " << o.TraceScale << ", \"temporal_reuse\": " << o.TemporalReuse
+       << ", \"multisamples\": " << window->GetMultiSamples() << ", \"frames\": " << o.Frames
+       << ",\n  \"renderer\": \"" << RendererName(window) << "\",\n  \"median_ms\": {\n";
   std::cout << std::fixed << std::setprecision(2) << "\nmedian ms on " << RendererName(window)
-            << ", " << o.Scene << " " << o.Width << "x" << o.Height << ", " << o.Resolution
+            << ", " << o.Scene << " (" << actors.size() << " actors, " << triangles
+            << " triangles) " << o.Width << "x" << o.Height << ", " << o.Resolution
             << "^3 voxels, trace at " << o.TraceScale << ", " << window->GetMultiSamples()
             << "x MSAA, " << o.Frames << " frames\n"
-            << std::setw(12) << "sequence" << std::setw(10) << "frame";
+            << std::setw(12) << "sequence" << std::setw(10) << "frame" << std::setw(10) << "cpu"
+            << std::setw(10) << "gpu span";
   for (int s = 0; s < vtkVoxelGIPass::NUMBER_OF_STAGES; ++s)
   {
     std::cout << std::setw(10) << std::string(vtkVoxelGIPass::GetStageName(s)).substr(0, 9);
   }
   std::cout << "\n";
-  for (std::size_t q = 0; q < sequences.size(); ++q)
+  for (std::size_t q = 0; q < selected.size(); ++q)
   {
-    const std::string& name = sequences[q].Name;
+    const std::string& name = selected[q]->Name;
     const auto& columns = samples[name];
-    json << "    \"" << name << "\": {\"frame\": " << Median(columns[0]);
-    std::cout << std::setw(12) << name << std::setw(10) << Median(columns[0]);
+    json << "    \"" << name << "\": {\"frame\": " << Median(columns[0])
+         << ", \"cpu\": " << Median(columns[1]) << ", \"gpu_span\": " << Median(columns[2]);
+    std::cout << std::setw(12) << name;
+    for (int m = 0; m < Measured; ++m)
+    {
+      std::cout << std::setw(10) << Median(columns[m]);
+    }
     for (int s = 0; s < vtkVoxelGIPass::NUMBER_OF_STAGES; ++s)
     {
-      json << ", \"" << vtkVoxelGIPass::GetStageName(s) << "\": " << Median(columns[s + 1]);
-      std::cout << std::setw(10) << Median(columns[s + 1]);
+      json << ", \"" << vtkVoxelGIPass::GetStageName(s) << "\": " << Median(columns[s + Measured]);
+      std::cout << std::setw(10) << Median(columns[s + Measured]);
     }
-    json << "}" << (q + 1 < sequences.size() ? "," : "") << "\n";
+    json << "}" << (q + 1 < selected.size() ? "," : "") << "\n";
     std::cout << "\n";
   }
   json << "  }\n}\n";

@@ -268,14 +268,20 @@ TEST_F(ScanFixture, SpecularMaterialsAreNoticed)
 
 TEST_F(ScanFixture, UnchangedFrameKey)
 {
-  AddSphere(this->Renderer, 0.0);
+  vtkActor* sphere = AddSphere(this->Renderer, 0.0);
   this->Renderer->GetActiveCamera(); // created on first use, as VTK does before the pass runs
   EXPECT_FALSE(this->Scan.Unchanged(this->Renderer, 1)); // nothing remembered yet
+  this->Scan.RememberFrame(this->Renderer, 1);
   EXPECT_TRUE(this->Scan.Unchanged(this->Renderer, 1));
   EXPECT_FALSE(this->Scan.Unchanged(this->Renderer, 2)); // the pass's settings changed
+  this->Scan.RememberFrame(this->Renderer, 2);
   this->Renderer->GetActiveCamera()->Azimuth(10.0);
   EXPECT_FALSE(this->Scan.Unchanged(this->Renderer, 2));
+  this->Scan.RememberFrame(this->Renderer, 2);
   EXPECT_TRUE(this->Scan.Unchanged(this->Renderer, 2));
+  sphere->AddPosition(1.0, 0.0, 0.0);
+  EXPECT_FALSE(this->Scan.Unchanged(this->Renderer, 2)); // a prop moved
+  this->Scan.RememberFrame(this->Renderer, 2);
   this->Scan.ForgetFrame();
   EXPECT_FALSE(this->Scan.Unchanged(this->Renderer, 2));
 }

@@ -1,0 +1,136 @@
+#include "MapperCopies.h"
+
+#include "SceneScan.h"
+
+#include "vtkActor.h"
+#include "vtkCompositePolyDataMapper2.h"
+#include "vtkMapper.h"
+#include "vtkOpenGLPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkRenderer.h"
+#include "vtkTexture.h"
+
+#include <unordered_set>
+
+namespace voxelgi
+{
+
+MapperCopies::~MapperCopies() = default;
+
+//------------------------------------------------------------------------------
+vtkMapper* MapperCopies::CopyOf(vtkActor* actor)
+{
+  vtkMapper* source = actor->GetMapper();
+  Copy& copy = this->Copies[actor];
+  if (copy.Actor != actor || copy.Source != source || !copy.Mapper)
+  {
+    copy.Actor = actor;
+    copy.Source = source;
+    copy.Mapper.TakeReference(source->NewInstance());
+    copy.Synced = 0;
+  }
+  // The source's time covers its input connection, colouring settings and lookup table.
+  const vtkMTimeType sourceTime = source->GetMTime();
+  if (sourceTime > copy.Synced)
+  {
+    vtkMapper* mapper = copy.Mapper;
+    // Input connection, scalar colouring (mode, range, array, lookup table, interpolation
+    // before mapping), clipping planes, coincident topology, pieces.
+    // (vtkOpenGLPolyDataMapper's own ShallowCopy adds only the selection id arrays and the
+    // deprecated shader code, which warns; the actor's shader property still applies.)
+    auto* glSource = vtkOpenGLPolyDataMapper::SafeDownCast(source);
+    auto* glCopy = vtkOpenGLPolyDataMapper::SafeDownCast(mapper);
+    if (glSource && glCopy)
+    {
+      glCopy->vtkPolyDataMapper::ShallowCopy(glSource);
+      // Same shift and scale: the 1e8-offset cases stay exact, and the points VBO is shared.
+      glCopy->SetVBOShiftScaleMethod(glSource->GetVBOShiftScaleMethod());
+    }
+    else
+    {
+      mapper->ShallowCopy(source);
+    }
+    mapper->SetStatic(source->GetStatic());
+    auto* compositeSource = vtkCompositePolyDataMapper2::SafeDownCast(source);
+    auto* compositeCopy = vtkCompositePolyDataMapper2::SafeDownCast(mapper);
+    if (compositeSource && compositeCopy)
+    {
+      // Block visibility, colours and opacities.
+      compositeCopy->SetCompositeDataDisplayAttributes(
+        compositeSource->GetCompositeDataDisplayAttributes());
+      compositeCopy->SetColorMissingArraysWithNanColor(
+        compositeSource->GetColorMissingArraysWithNanColor());
+    }
+    copy.Synced = source->GetMTime();
+  }
+  return copy.Mapper;
+}
+
+//------------------------------------------------------------------------------
+int MapperCopies::Draw(vtkActor* actor, vtkRenderer* renderer)
+{
+  if (!actor || !actor->GetMapper())
+  {
+    return 0;
+  }
+  vtkMapper* mapper = this->CopyOf(actor);
+  // What vtkActor::RenderOpaqueGeometry does, with the copy in place of the actor's mapper:
+  // the property and the textures are the actor's own.
+  vtkProperty* property = actor->GetProperty();
+  property->Render(actor, renderer);
+  if (vtkProperty* backface = actor->GetBackfaceProperty())
+  {
+    backface->BackfaceRender(actor, renderer);
+  }
+  vtkTexture* texture = actor->GetTexture();
+  if (texture)
+  {
+    texture->Render(renderer);
+  }
+  actor->Render(renderer, mapper);
+  property->PostRender(actor, renderer);
+  if (texture)
+  {
+    texture->PostRender(renderer);
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void MapperCopies::Retain(const std::vector<ActorRecord>& records, vtkWindow* window)
+{
+  std::unordered_set<vtkActor*> kept;
+  for (const ActorRecord& record : records)
+  {
+    kept.insert(record.Actor);
+  }
+  for (auto it = this->Copies.begin(); it != this->Copies.end();)
+  {
+    if (!it->second.Actor || !kept.count(it->first))
+    {
+      if (it->second.Mapper)
+      {
+        it->second.Mapper->ReleaseGraphicsResources(window);
+      }
+      it = this->Copies.erase(it);
+    }
+    else
+    {
+      ++it;
+    }
+  }
+}
+
+void MapperCopies::ReleaseGraphicsResources(vtkWindow* window)
+{
+  for (auto& entry : this->Copies)
+  {
+    if (entry.second.Mapper)
+    {
+      entry.second.Mapper->ReleaseGraphicsResources(window);
+    }
+  }
+  this->Copies.clear();
+}
+
+}
