@@ -71,6 +71,13 @@ bool PropUserDynamic(vtkProp* prop)
   return info && info->Has(vtkVoxelGIPass::DYNAMIC()) && info->Get(vtkVoxelGIPass::DYNAMIC());
 }
 
+/// Modification time of the actor's input data (0: none).
+vtkMTimeType InputTime(vtkActor* actor)
+{
+  vtkDataObject* input = actor->GetMapper()->GetInputDataObject(0, 0);
+  return input ? input->GetMTime() : 0;
+}
+
 /// Warning for an actor whose input has NaN or Inf point coordinates, or empty.
 std::string NonFinitePoints(vtkActor* actor)
 {
@@ -211,8 +218,9 @@ bool SceneScan::Collect(vtkRenderer* renderer, std::vector<ActorRecord>& records
     ActorRecord record;
     record.Actor = actor;
     record.Signature = ActorSignature(actor);
+    record.InputTime = InputTime(actor);
     auto found = previous.find(actor);
-    if (found == previous.end() || record.Signature > found->second->Signature)
+    if (found == previous.end() || record.InputTime != found->second->InputTime)
     {
       std::string bad = NonFinitePoints(actor); // new or changed input: check it once
       if (!bad.empty())
@@ -250,7 +258,13 @@ void SceneScan::Compare(
 {
   full = !this->Voxelized || records.size() != this->Records.size();
   dynamic = false;
-  for (std::size_t i = 0; i < records.size() && !full; ++i)
+  if (full)
+  {
+    return;
+  }
+  // Every record is compared, also after one has asked for a full rebuild: all the actors
+  // that changed become dynamic in that one rebuild.
+  for (std::size_t i = 0; i < records.size(); ++i)
   {
     ActorRecord& record = records[i];
     const ActorRecord& old = this->Records[i];

@@ -45,6 +45,7 @@ struct ActorRecord
 {
   vtkWeakPointer<vtkActor> Actor;
   vtkMTimeType Signature = 0; // latest modification time of actor, mapper and input
+  vtkMTimeType InputTime = 0; // the input's: its points were checked for NaN at this time
   std::array<double, 3> Emission{ { 0.0, 0.0, 0.0 } };
   bool UserDynamic = false;
   bool Dynamic = false; // user choice, or changed after voxelization (AutoDynamic)

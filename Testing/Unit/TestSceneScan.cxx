@@ -105,6 +105,34 @@ TEST_F(ScanFixture, ChangedStaticActorRebuildsAllAndBecomesDynamic)
   EXPECT_FALSE(this->Update.Full);
 }
 
+TEST_F(ScanFixture, ActorsChangedTogetherAllBecomeDynamicInOneRebuild)
+{
+  std::vector<vtkSmartPointer<vtkActor>> actors;
+  for (int i = 0; i < 4; ++i)
+  {
+    actors.push_back(AddSphere(this->Renderer, 2.0 * i));
+  }
+  ASSERT_TRUE(this->Next());
+  for (auto& actor : actors)
+  {
+    actor->AddPosition(0.0, 0.01, 0.0);
+  }
+  ASSERT_TRUE(this->Next());
+  EXPECT_TRUE(this->Update.Full);
+  for (const voxelgi::ActorRecord& record : this->Scan.GetRecords())
+  {
+    EXPECT_TRUE(record.Dynamic);
+  }
+  // Moved together again: the dynamic actors alone are revoxelized.
+  for (auto& actor : actors)
+  {
+    actor->AddPosition(0.0, -0.01, 0.0);
+  }
+  ASSERT_TRUE(this->Next());
+  EXPECT_TRUE(this->Update.Run);
+  EXPECT_FALSE(this->Update.Full);
+}
+
 TEST_F(ScanFixture, WithoutAutoDynamicEveryChangeIsFull)
 {
   this->Config.AutoDynamic = false;
