@@ -1,16 +1,18 @@
 // Clears the voxelization accumulators before a revoxelization: everything (clearStatic = 1),
 // or only the voxels the flag volume does not mark static, so static geometry is kept while
-// dynamic actors are voxelized again.
+// dynamic actors are voxelized again. Runs over the bricks the last resolve found occupied
+// (outside them every sum is zero already; after allocation the list holds every brick).
 layout(local_size_x = VOXELGI_LOCAL_SIZE, local_size_y = VOXELGI_LOCAL_SIZE, local_size_z = VOXELGI_LOCAL_SIZE) in;
 
 #include "voxel_common.glsl"
+#include "brick_list.glsl"
 
 layout(r8ui, binding = VOXELGI_FLAG_IMAGE_UNIT) uniform uimage3D voxelFlag;
 uniform int clearStatic;
 
 void main()
 {
-  ivec3 v = ivec3(gl_GlobalInvocationID);
+  ivec3 v = voxelBrickInvocation();
   if (any(greaterThanEqual(v, ivec3(voxelResolution))))
   {
     return;

@@ -1,4 +1,4 @@
-// One bounce of indirect diffuse light per voxel: cones over the voxel normal's hemisphere
+// One bounce of indirect diffuse light per occupied voxel (over the occupied bricks): cones over the voxel normal's hemisphere
 // (or six axis cones over the sphere where normals cancel) gather the previous radiance from
 // the mipmaps; radiance = direct + albedo x gathered. The cone weights sum to one and the
 // albedo is below one, so repeated bounces converge from below (energy bounded).
@@ -6,6 +6,7 @@ layout(local_size_x = VOXELGI_LOCAL_SIZE, local_size_y = VOXELGI_LOCAL_SIZE, loc
 
 #include "lights.glsl"
 #include "cone_tracing.glsl"
+#include "brick_list.glsl"
 
 uniform sampler3D voxelAlbedo;
 uniform sampler3D voxelNormal;
@@ -19,7 +20,7 @@ layout(rgba16f, binding = 0) uniform writeonly image3D radianceOut;
 
 void main()
 {
-  ivec3 v = ivec3(gl_GlobalInvocationID);
+  ivec3 v = voxelBrickInvocation(); // occupied bricks only
   int res = voxelResolution;
   if (any(greaterThanEqual(v, ivec3(res))))
   {

@@ -1,8 +1,10 @@
 // Turns the accumulated sums into the voxel volumes the later stages sample: mean albedo
-// (alpha = occupied), mean unit normal (zero where the normals cancel out) and mean emission.
+// (alpha = occupied), mean unit normal (zero where the normals cancel out) and mean emission;
+// and lists the occupied bricks (brick_list.glsl).
 layout(local_size_x = VOXELGI_LOCAL_SIZE, local_size_y = VOXELGI_LOCAL_SIZE, local_size_z = VOXELGI_LOCAL_SIZE) in;
 
 #include "voxel_common.glsl"
+#include "brick_list.glsl"
 
 layout(rgba8, binding = 1) uniform writeonly image3D voxelAlbedo;
 layout(rgba8, binding = 2) uniform writeonly image3D voxelNormal;
@@ -12,13 +14,18 @@ uniform float emissionScale;
 #endif
 
 
+shared uint brickOccupied;
+
 void main()
 {
+  // Resolutions are powers of two of at least 16: every invocation is inside the grid, and
+  // all of them reach the barriers.
   ivec3 v = ivec3(gl_GlobalInvocationID);
-  if (any(greaterThanEqual(v, ivec3(voxelResolution))))
+  if (gl_LocalInvocationIndex == 0u)
   {
-    return;
+    brickOccupied = 0u;
   }
+  barrier();
   int i = voxelIndex(v);
   uint count = voxelCount[i];
   vec4 albedo = vec4(0.0);
@@ -26,6 +33,7 @@ void main()
   vec3 emission = vec3(0.0);
   if (count > 0u)
   {
+    brickOccupied = 1u;
     float n = float(count);
     albedo = vec4(voxelMean(voxelAlbedoR[i], voxelAlbedoG[i], voxelAlbedoB[i], n), 1.0);
     vec3 m = voxelMean(voxelNormalX[i], voxelNormalY[i], voxelNormalZ[i], n) * 2.0 - 1.0;
@@ -40,4 +48,9 @@ void main()
 #if VOXEL_CHANNELS > VOXELGI_BASE_CHANNELS
   imageStore(voxelEmission, v, vec4(emission, 1.0));
 #endif
+  barrier();
+  if (gl_LocalInvocationIndex == 0u && brickOccupied != 0u)
+  {
+    bricks[atomicAdd(brickDispatch[0], 1u)] = voxelBrickPack(gl_WorkGroupID);
+  }
 }

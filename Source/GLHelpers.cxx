@@ -133,6 +133,14 @@ void ComputeProgram::DispatchCube(int n, int localSize)
   glUseProgram(0);
 }
 
+void ComputeProgram::DispatchIndirect(const StorageBuffer& arguments)
+{
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, arguments.GetHandle());
+  glDispatchComputeIndirect(0);
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+  glUseProgram(0);
+}
+
 void ComputeProgram::DispatchImage(int width, int height, int tile)
 {
   glDispatchCompute(static_cast<GLuint>((width + tile - 1) / tile),
@@ -228,6 +236,11 @@ void Volume3D::GenerateMipmaps() const
   glBindTexture(GL_TEXTURE_3D, this->Handle);
   glGenerateMipmap(GL_TEXTURE_3D);
   glBindTexture(GL_TEXTURE_3D, 0);
+}
+
+void Volume3D::Clear() const
+{
+  glClearTexImage(this->Handle, 0, GL_RGBA, GL_FLOAT, nullptr);
 }
 
 int Volume3D::BindSampler(vtkOpenGLRenderWindow* renWin) const

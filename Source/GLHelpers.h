@@ -28,6 +28,7 @@ class vtkTextureObject;
 
 namespace voxelgi
 {
+class StorageBuffer;
 
 /// A compute program built from one GLSL source (the `#version` line is prepended).
 class ComputeProgram
@@ -62,6 +63,9 @@ public:
   void DispatchCube(int n, int localSize);
   /// Dispatch tiles of `tile` x `tile` to cover a `width` x `height` image, then unbind.
   void DispatchImage(int width, int height, int tile);
+  /// Dispatch the groups that a buffer's first three uints count (written on the GPU, e.g.
+  /// the occupied-brick list), then unbind.
+  void DispatchIndirect(const StorageBuffer& arguments);
   void Release();
 
 private:
@@ -84,6 +88,8 @@ public:
   void BindImage(unsigned int unit, unsigned int access, int level = 0) const;
   /// Box-filter the mip chain from level 0.
   void GenerateMipmaps() const;
+  /// Set level 0 to zero.
+  void Clear() const;
   /// Bind for sampling on a unit taken from the window's texture unit manager.
   int BindSampler(vtkOpenGLRenderWindow* renWin) const;
   /// Read level 0 back into `data`, which must hold Bytes() for the given format/type.
@@ -148,6 +154,7 @@ public:
   void Bind(unsigned int index) const;
   void BindUniform(unsigned int index) const;
   void Upload(const void* data, std::size_t bytes) const;
+  unsigned int GetHandle() const { return this->Handle; }
   void Read(std::size_t offset, std::size_t bytes, void* data) const;
   std::size_t Bytes() const { return this->ByteSize; }
   void Release();

@@ -76,10 +76,18 @@ void LightVoxels::Run(const Frame& frame)
   }
   const bool direct = this->Direct.IsAllocated();
   p.SetInt("writeDirect", direct ? 1 : 0);
+  // The dispatch writes the occupied bricks only: bricks emptied since are cleared here.
+  this->Radiance.Clear();
+  if (direct)
+  {
+    this->Direct.Clear();
+  }
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   this->Radiance.BindImage(0, GL_WRITE_ONLY);
   // Without a direct volume the second image unit still needs a matching format behind it.
   (direct ? this->Direct : this->Radiance).BindImage(1, GL_WRITE_ONLY);
-  p.DispatchCube(this->Radiance.Resolution(), VOXELGI_LOCAL_SIZE);
+  voxels.GetBrickList().Bind(VOXELGI_BRICK_LIST_BINDING);
+  p.DispatchIndirect(voxels.GetBrickList());
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 }
 

@@ -50,7 +50,8 @@ void VoxelBounce::Bounce(const Frame& frame)
   p.SetFloat("coneTanHalf", this->Cones.TanHalf);
   p.SetFloat("maxDistance", this->Cones.MaxDistance);
   radiance.BindImage(0, GL_WRITE_ONLY);
-  p.DispatchCube(radiance.Resolution(), VOXELGI_LOCAL_SIZE);
+  this->Voxels.GetBrickList().Bind(VOXELGI_BRICK_LIST_BINDING);
+  p.DispatchIndirect(this->Voxels.GetBrickList());
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 }
 

@@ -37,10 +37,17 @@ std::size_t Cube(int resolution)
   return n * n * n;
 }
 
+/// The brick list: indirect dispatch arguments and padding (4 uints), then one uint a brick.
+std::size_t BrickListBytes(int resolution)
+{
+  return 4 * (4 + Cube(resolution / VOXELGI_LOCAL_SIZE));
+}
+
 void Barrier()
 {
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
-    GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT |
+    GL_COMMAND_BARRIER_BIT);
 }
 }
 
@@ -52,7 +59,7 @@ std::size_t VoxelizePass::RequiredBytes(int resolution, bool emission)
 {
   // accumulators (4 B per channel) + flag (1 B) + albedo, normal (4 B) [+ emission (8 B)]
   const std::size_t perVoxel = 4 * Channels(emission) + 1 + 4 + 4 + (emission ? 8 : 0);
-  return Cube(resolution) * perVoxel;
+  return Cube(resolution) * perVoxel + BrickListBytes(resolution);
 }
 
 std::string VoxelizePass::Defines() const
@@ -94,6 +101,7 @@ bool VoxelizePass::Prepare(const Frame& frame, std::string& error)
   {
     this->Accumulators[c].Release();
   }
+  ok = ok && this->BrickList.Allocate(BrickListBytes(resolution));
   ok = ok && this->FlagVolume.Allocate(GL_R8UI, resolution);
   ok = ok && this->AlbedoVolume.Allocate(GL_RGBA8, resolution);
   ok = ok && this->NormalVolume.Allocate(GL_RGBA8, resolution);
@@ -114,6 +122,7 @@ bool VoxelizePass::Prepare(const Frame& frame, std::string& error)
     this->ReleaseGraphicsResources(frame.Window);
     return false;
   }
+  this->ListEveryBrick(); // new buffers hold anything: the first clear covers every brick
   if (variantChanged)
   {
     std::string log;
@@ -127,6 +136,23 @@ bool VoxelizePass::Prepare(const Frame& frame, std::string& error)
     this->ShaderStageTime.Modified(); // the mapper shaders depend on the emission variant
   }
   return true;
+}
+
+void VoxelizePass::ListEveryBrick()
+{
+  const unsigned int bricks = static_cast<unsigned int>(this->Resolution / VOXELGI_LOCAL_SIZE);
+  std::vector<unsigned int> list{ bricks * bricks * bricks, 1, 1, 0 };
+  for (unsigned int z = 0; z < bricks; ++z)
+  {
+    for (unsigned int y = 0; y < bricks; ++y)
+    {
+      for (unsigned int x = 0; x < bricks; ++x)
+      {
+        list.push_back(x | (y << 10) | (z << 20)); // as voxelBrickPack
+      }
+    }
+  }
+  this->BrickList.Upload(list.data(), list.size() * sizeof(unsigned int));
 }
 
 //------------------------------------------------------------------------------
@@ -248,15 +274,19 @@ void VoxelizePass::Clear(const Frame& frame)
 {
   ScopedStage stage(*frame.Clock, vtkVoxelGIPass::STAGE_CLEAR);
   this->BindAccumulators();
+  this->BrickList.Bind(VOXELGI_BRICK_LIST_BINDING);
   this->ClearProgram.Use(frame.Window);
   this->ClearProgram.SetInt("clearStatic", frame.Voxels.Full ? 1 : 0);
-  this->ClearProgram.DispatchCube(this->Resolution, VOXELGI_LOCAL_SIZE);
+  this->ClearProgram.DispatchIndirect(this->BrickList);
   Barrier();
 }
 
 void VoxelizePass::Resolve(const Frame& frame)
 {
   ScopedStage stage(*frame.Clock, vtkVoxelGIPass::STAGE_RESOLVE);
+  const unsigned int emptyList[4] = { 0, 1, 1, 0 }; // no brick yet; 1 x 1 in y and z
+  this->BrickList.Upload(emptyList, sizeof(emptyList));
+  this->BrickList.Bind(VOXELGI_BRICK_LIST_BINDING);
   for (int c = 0; c < Channels(this->Emission); ++c)
   {
     this->Accumulators[c].Bind(static_cast<unsigned int>(c));
@@ -333,7 +363,7 @@ bool VoxelizePass::SetShaderParameters(
 //------------------------------------------------------------------------------
 std::size_t VoxelizePass::MemoryBytes() const
 {
-  std::size_t bytes = this->FlagVolume.Bytes() + this->AlbedoVolume.Bytes() +
+  std::size_t bytes = this->BrickList.Bytes() + this->FlagVolume.Bytes() + this->AlbedoVolume.Bytes() +
     this->NormalVolume.Bytes() + this->EmissionVolume.Bytes();
   for (const auto& buffer : this->Accumulators)
   {
@@ -372,6 +402,7 @@ void VoxelizePass::ReleaseGraphicsResources(vtkWindow* window)
   {
     buffer.Release();
   }
+  this->BrickList.Release();
   this->FlagVolume.Release();
   this->AlbedoVolume.Release();
   this->NormalVolume.Release();

@@ -7,7 +7,8 @@
  * storage buffer per channel), seen through an orthographic camera fitted to the grid cube.
  * A flag volume marks voxels written by static actors: dynamic actors skip them, and the
  * clear (clear_dynamic.comp) keeps them. The resolve (voxel_resolve.comp) turns the sums into
- * the sampled volumes: albedo and normal RGBA8, emission RGBA16F.
+ * the sampled volumes: albedo and normal RGBA8, emission RGBA16F; and lists the occupied
+ * bricks, which the later per-voxel stages work on.
  */
 #ifndef VoxelGIVoxelizePass_h
 #define VoxelGIVoxelizePass_h
@@ -62,6 +63,9 @@ public:
   const Volume3D& GetAlbedo() const { return this->AlbedoVolume; }
   const Volume3D& GetNormal() const { return this->NormalVolume; }
   const Volume3D& GetEmission() const { return this->EmissionVolume; }
+  /// The occupied bricks (brick_list.glsl), listed by the resolve: the lighting and the
+  /// bounce dispatch over it.
+  const StorageBuffer& GetBrickList() const { return this->BrickList; }
   /// Read back: counts (one uint per voxel) and flags (one byte).
   void ReadCounts(std::vector<unsigned int>& counts) const;
   void ReadFlags(std::vector<unsigned char>& flags) const;
@@ -88,6 +92,8 @@ private:
   void AimCamera(const Frame& frame);
   /// Render `props` into the accumulators as static or dynamic actors.
   void Draw(const Frame& frame, std::vector<vtkProp*>& props, bool staticPass);
+  /// Put every brick of the grid in the brick list.
+  void ListEveryBrick();
   void Clear(const Frame& frame);
   void Resolve(const Frame& frame);
   void BindAccumulators() const;
@@ -99,6 +105,7 @@ private:
   double EmissionScale = 0.0;
   std::unordered_map<vtkProp*, std::array<double, 3>> PropEmissions;
   std::array<StorageBuffer, VOXELGI_BASE_CHANNELS + VOXELGI_EMISSION_CHANNELS> Accumulators;
+  StorageBuffer BrickList;
   Volume3D FlagVolume;
   Volume3D AlbedoVolume;
   Volume3D NormalVolume;

@@ -1,7 +1,8 @@
 // Static/dynamic split: a dynamic actor that moves is revoxelized alone (clear-dynamic +
 // dynamic voxelization), static voxels stay flagged and untouched; an unchanged frame does
 // no voxel work (the last traced image is presented again); a static actor that moves triggers
-// a full revoxelization and, with AutoDynamic, becomes dynamic.
+// a full revoxelization and, with AutoDynamic, becomes dynamic. Clear, lighting and bounce
+// run over the bricks the resolve found occupied: places left behind are empty and dark.
 #include "VoxelGITestUtilities.h"
 #include "vtkVoxelGIPass.h"
 
@@ -34,7 +35,7 @@ std::string StagesRun(vtkVoxelGIPass* gi)
   return ran;
 }
 
-// Value of a volume at the voxel containing world point p.
+// Value (first component) of a volume at the voxel containing world point p.
 double At(vtkVoxelGIPass* gi, vtkImageData* image, double x, double y, double z)
 {
   double origin[3];
@@ -43,7 +44,7 @@ double At(vtkVoxelGIPass* gi, vtkImageData* image, double x, double y, double z)
   const int n = gi->GetGridResolution();
   const int i = static_cast<int>((x - origin[0]) / h), j = static_cast<int>((y - origin[1]) / h),
             k = static_cast<int>((z - origin[2]) / h);
-  return image->GetPointData()->GetScalars()->GetTuple1(i + n * (j + n * k));
+  return image->GetPointData()->GetScalars()->GetComponent(i + n * (j + n * k), 0);
 }
 }
 
@@ -117,6 +118,11 @@ int TestVoxelDynamic(int, char*[])
   VOXELGI_CHECK(At(gi, counts, 2.0, 2.0, 0.0) > 0, "static floor voxel lost");
   VOXELGI_CHECK(At(gi, flags, 2.0, 2.0, 0.0) == 1, "static floor voxel not flagged");
   VOXELGI_CHECK(At(gi, counts, 3.25, 3.25, 2.0) > 0, "static post voxel lost");
+  // The lighting runs over the bricks found occupied: the emptied place is dark.
+  vtkNew<vtkImageData> radiance;
+  VOXELGI_CHECK(gi->GetVoxelVolume(vtkVoxelGIPass::VOLUME_RADIANCE, radiance), "no radiance");
+  VOXELGI_CHECK(At(gi, radiance, 0.75, 0.75, 1.0) == 0.0, "old cube position still lit");
+  VOXELGI_CHECK(At(gi, radiance, 2.75, 0.75, 1.0) > 0.0, "new cube position not lit");
 
   // A static actor moves: full revoxelization; AutoDynamic makes it dynamic from now on.
   post->SetPosition(-2.0, 0.0, 0.0);
@@ -126,6 +132,8 @@ int TestVoxelDynamic(int, char*[])
   VOXELGI_CHECK(gi->GetVoxelVolume(vtkVoxelGIPass::VOLUME_COUNT, counts), "no counts");
   VOXELGI_CHECK(At(gi, counts, 3.25, 3.25, 2.0) == 0, "old post position still voxelized");
   VOXELGI_CHECK(At(gi, counts, 1.25, 3.25, 2.0) > 0, "moved post not voxelized");
+  VOXELGI_CHECK(gi->GetVoxelVolume(vtkVoxelGIPass::VOLUME_RADIANCE, radiance), "no radiance");
+  VOXELGI_CHECK(At(gi, radiance, 3.25, 3.25, 2.0) == 0.0, "old post position still lit");
   post->SetPosition(-2.0, -1.0, 0.0);
   window->Render();
   VOXELGI_CHECK(StagesRun(gi) == "Scan,Clear,VoxelizeDynamic,Resolve" + Relight,
