@@ -1,12 +1,10 @@
-// Voxel direct lighting, over the occupied bricks (the volumes are cleared before): outgoing
-// radiance of every occupied voxel from the renderer's lights
+// Voxel direct lighting: outgoing radiance of every occupied voxel from the renderer's lights
 // (VTK's light model, normal-weighted attenuation of the deferred-voxel-shading technique,
 // occlusion by soft voxel shadows raymarched toward the light or, with VOXELGI_SHADOW_MAPS,
 // by the directional and spot lights' shadow maps) plus the voxel's emission.
 layout(local_size_x = VOXELGI_LOCAL_SIZE, local_size_y = VOXELGI_LOCAL_SIZE, local_size_z = VOXELGI_LOCAL_SIZE) in;
 
 #include "lights.glsl"
-#include "brick_list.glsl"
 
 uniform sampler3D voxelAlbedo; // rgb albedo, a occupancy; linear filtering softens shadow edges
 uniform sampler3D voxelNormal;
@@ -74,7 +72,7 @@ float voxelNormalWeighted(vec3 n, vec3 toLight, bool twoSided)
 
 void main()
 {
-  ivec3 v = voxelBrickInvocation(); // occupied bricks only
+  ivec3 v = ivec3(gl_GlobalInvocationID);
   int res = voxelResolution;
   if (any(greaterThanEqual(v, ivec3(res))))
   {

@@ -20,7 +20,7 @@
 
 /* Shader storage binding of the occupied-brick list (brick_list.glsl). A brick is one work
    group of the per-voxel stages, VOXELGI_LOCAL_SIZE^3 voxels: the resolve lists the occupied
-   ones, and the lighting and the bounce run on those alone (an indirect dispatch). */
+   ones, and the clear and the bounce run on those alone (an indirect dispatch). */
 #define VOXELGI_BRICK_LIST_BINDING 10
 
 /* Image units of the voxelization stage. */

@@ -238,11 +238,6 @@ void Volume3D::GenerateMipmaps() const
   glBindTexture(GL_TEXTURE_3D, 0);
 }
 
-void Volume3D::Clear() const
-{
-  glClearTexImage(this->Handle, 0, GL_RGBA, GL_FLOAT, nullptr);
-}
-
 int Volume3D::BindSampler(vtkOpenGLRenderWindow* renWin) const
 {
   const int unit = renWin->GetTextureUnitManager()->Allocate();

@@ -88,8 +88,6 @@ public:
   void BindImage(unsigned int unit, unsigned int access, int level = 0) const;
   /// Box-filter the mip chain from level 0.
   void GenerateMipmaps() const;
-  /// Set level 0 to zero.
-  void Clear() const;
   /// Bind for sampling on a unit taken from the window's texture unit manager.
   int BindSampler(vtkOpenGLRenderWindow* renWin) const;
   /// Read level 0 back into `data`, which must hold Bytes() for the given format/type.

@@ -71,13 +71,6 @@ bool PropUserDynamic(vtkProp* prop)
   return info && info->Has(vtkVoxelGIPass::DYNAMIC()) && info->Get(vtkVoxelGIPass::DYNAMIC());
 }
 
-/// Modification time of the actor's input data (0: none).
-vtkMTimeType InputTime(vtkActor* actor)
-{
-  vtkDataObject* input = actor->GetMapper()->GetInputDataObject(0, 0);
-  return input ? input->GetMTime() : 0;
-}
-
 /// Warning for an actor whose input has NaN or Inf point coordinates, or empty.
 std::string NonFinitePoints(vtkActor* actor)
 {
@@ -158,16 +151,16 @@ vtkInformation* EnsurePropertyKeys(vtkProp* prop)
 }
 
 //------------------------------------------------------------------------------
-vtkMTimeType SceneScan::ActorSignature(vtkActor* actor)
+vtkMTimeType SceneScan::ActorSignature(vtkActor* actor, vtkMTimeType* inputTime)
 {
-  vtkMTimeType t = actor->GetMTime();
   vtkMapper* mapper = actor->GetMapper();
-  t = std::max(t, mapper->GetMTime());
-  if (vtkDataObject* input = mapper->GetInputDataObject(0, 0))
+  vtkDataObject* input = mapper->GetInputDataObject(0, 0);
+  const vtkMTimeType inputModified = input ? input->GetMTime() : 0;
+  if (inputTime)
   {
-    t = std::max(t, input->GetMTime());
+    *inputTime = inputModified;
   }
-  return t;
+  return std::max({ actor->GetMTime(), mapper->GetMTime(), inputModified });
 }
 
 //------------------------------------------------------------------------------
@@ -217,8 +210,7 @@ bool SceneScan::Collect(vtkRenderer* renderer, std::vector<ActorRecord>& records
     EnsurePropertyKeys(actor);
     ActorRecord record;
     record.Actor = actor;
-    record.Signature = ActorSignature(actor);
-    record.InputTime = InputTime(actor);
+    record.Signature = ActorSignature(actor, &record.InputTime);
     auto found = previous.find(actor);
     if (found == previous.end() || record.InputTime != found->second->InputTime)
     {

@@ -106,8 +106,9 @@ public:
   /// Forget the remembered state (the next Unchanged() is false).
   void ForgetFrame() { this->FrameKey.clear(); }
 
-  /// Latest modification time of an actor, its mapper and the mapper's input.
-  static vtkMTimeType ActorSignature(vtkActor* actor);
+  /// Latest modification time of an actor, its mapper and the mapper's input (the input's
+  /// own into `inputTime`, when given).
+  static vtkMTimeType ActorSignature(vtkActor* actor, vtkMTimeType* inputTime = nullptr);
 
 private:
   static std::vector<unsigned long long> FrameKeyOf(vtkRenderer* renderer, vtkMTimeType settingsTime);

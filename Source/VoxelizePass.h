@@ -63,8 +63,8 @@ public:
   const Volume3D& GetAlbedo() const { return this->AlbedoVolume; }
   const Volume3D& GetNormal() const { return this->NormalVolume; }
   const Volume3D& GetEmission() const { return this->EmissionVolume; }
-  /// The occupied bricks (brick_list.glsl), listed by the resolve: the lighting and the
-  /// bounce dispatch over it.
+  /// The occupied bricks (brick_list.glsl), listed by the resolve: the bounce dispatches
+  /// over it.
   const StorageBuffer& GetBrickList() const { return this->BrickList; }
   /// Read back: counts (one uint per voxel) and flags (one byte).
   void ReadCounts(std::vector<unsigned int>& counts) const;

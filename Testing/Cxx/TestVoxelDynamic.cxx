@@ -1,7 +1,7 @@
 // Static/dynamic split: a dynamic actor that moves is revoxelized alone (clear-dynamic +
 // dynamic voxelization), static voxels stay flagged and untouched; an unchanged frame does
 // no voxel work (the last traced image is presented again); a static actor that moves triggers
-// a full revoxelization and, with AutoDynamic, becomes dynamic. Clear, lighting and bounce
+// a full revoxelization and, with AutoDynamic, becomes dynamic. The clear and the bounce
 // run over the bricks the resolve found occupied: places left behind are empty and dark.
 #include "VoxelGITestUtilities.h"
 #include "vtkVoxelGIPass.h"
@@ -118,7 +118,7 @@ int TestVoxelDynamic(int, char*[])
   VOXELGI_CHECK(At(gi, counts, 2.0, 2.0, 0.0) > 0, "static floor voxel lost");
   VOXELGI_CHECK(At(gi, flags, 2.0, 2.0, 0.0) == 1, "static floor voxel not flagged");
   VOXELGI_CHECK(At(gi, counts, 3.25, 3.25, 2.0) > 0, "static post voxel lost");
-  // The lighting runs over the bricks found occupied: the emptied place is dark.
+  // The bounce runs over the bricks found occupied: the emptied place stays dark.
   vtkNew<vtkImageData> radiance;
   VOXELGI_CHECK(gi->GetVoxelVolume(vtkVoxelGIPass::VOLUME_RADIANCE, radiance), "no radiance");
   VOXELGI_CHECK(At(gi, radiance, 0.75, 0.75, 1.0) == 0.0, "old cube position still lit");
