@@ -2,7 +2,8 @@
 //
 //   VoxelGIBenchmark [--scene cornell|field|atrium|sphere] [--objects N] [--triangles N]
 //                    [--size WxH] [--resolution R] [--frames F] [--warmup W] [--trace-scale S]
-//                    [--multisamples N] [--egl] [--temporal-reuse 0|1]
+//                    [--multisamples N] [--egl] [--temporal-reuse 0|1] [--bounces N]
+//                    [--update-interval N]
 //                    [--sequences NAME,NAME,...] [--csv FILE] [--json FILE] [--image FILE]
 //
 // Scenes: the Cornell box (36 triangles), a field of N spheres and boxes on a ground plane
@@ -72,6 +73,8 @@ struct Options
   int Warmup = 3;
   double TraceScale = 1.0;
   bool TemporalReuse = true;
+  int Bounces = -1;        // -1: the default
+  int UpdateInterval = 0;  // > 0: revoxelize every N frames (UpdatePolicy EveryNFrames)
   int MultiSamples = -1; // -1: VTK's default
   bool EGL = false;
   std::string CSV = "voxelgi-benchmark.csv";
@@ -274,6 +277,8 @@ bool Parse(int argc, char* argv[], Options& o)
     if (arg == "--scene") o.Scene = next();
     else if (arg == "--objects") o.Objects = std::atoi(next().c_str());
     else if (arg == "--triangles") o.Triangles = std::atoll(next().c_str());
+    else if (arg == "--bounces") o.Bounces = std::atoi(next().c_str());
+    else if (arg == "--update-interval") o.UpdateInterval = std::atoi(next().c_str());
     else if (arg == "--sequences") o.Sequences = next();
     else if (arg == "--size")
     {
@@ -310,6 +315,7 @@ int main(int argc, char* argv[])
     std::cerr << "usage: VoxelGIBenchmark [--scene cornell|field|atrium|sphere] [--objects N] "
                  "[--triangles N] [--size WxH] [--resolution R] [--frames F] [--warmup W] "
                  "[--trace-scale S] [--multisamples N] [--egl] [--temporal-reuse 0|1] "
+                 "[--bounces N] [--update-interval N] "
                  "[--sequences NAME,...] [--csv FILE] [--json FILE] [--image FILE]"
               << std::endl;
     return EXIT_FAILURE;
@@ -372,6 +378,15 @@ int main(int argc, char* argv[])
   gi->SetVoxelResolution(o.Resolution);
   gi->SetTraceResolution(o.TraceScale);
   gi->SetTemporalReuse(o.TemporalReuse);
+  if (o.Bounces >= 0)
+  {
+    gi->SetBounces(o.Bounces);
+  }
+  if (o.UpdateInterval > 0)
+  {
+    gi->SetUpdatePolicyToEveryNFrames();
+    gi->SetUpdateInterval(o.UpdateInterval);
+  }
   renderer->SetPass(gi);
 
   if (!o.Image.empty())
@@ -504,7 +519,9 @@ int main(int argc, char* argv[])
        << ", \"triangles\": " << triangles << ", \"width\": " << o.Width
        << ", \"height\": " << o.Height << ", \"resolution\": " << o.Resolution
        << ", \"trace_scale\": " << o.TraceScale << ", \"temporal_reuse\": " << o.TemporalReuse
-       << ", \"multisamples\": " << window->GetMultiSamples() << ", \"frames\": " << o.Frames
+       << ", \"multisamples\": " << window->GetMultiSamples() << ", \"bounces\": "
+       << gi->GetBounces() << ", \"update_interval\": " << o.UpdateInterval
+       << ", \"frames\": " << o.Frames
        << ",\n  \"renderer\": \"" << RendererName(window) << "\",\n  \"median_ms\": {\n";
   std::cout << std::fixed << std::setprecision(2) << "\nmedian ms on " << RendererName(window)
             << ", " << o.Scene << " (" << actors.size() << " actors, " << triangles
