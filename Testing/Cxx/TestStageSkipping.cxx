@@ -1,13 +1,21 @@
 // Leave out what the scene does not need: for each kind of change, two frames are rendered
 // and exactly the expected stages must run on the second; the image must then equal a full
 // recompute by a fresh pass. Also the update policies and the memory of unneeded volumes.
+// Overlays that VTK redraws every frame (text, scalar bar, cube axes, legend: their
+// modification times change while they render) are in the scene and must not make an
+// unchanged frame re-trace.
 #include "VoxelGITestUtilities.h"
 #include "vtkVoxelGIPass.h"
 #include "vtkVoxelGIScenes.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkCubeAxesActor.h"
 #include "vtkCubeSource.h"
+#include "vtkLegendBoxActor.h"
+#include "vtkLookupTable.h"
+#include "vtkScalarBarActor.h"
+#include "vtkTextActor.h"
 #include "vtkFloatArray.h"
 #include "vtkLight.h"
 #include "vtkNew.h"
@@ -85,6 +93,25 @@ int TestStageSkipping(int, char*[])
   renderer->AddLight(light);
   renderer->GetActiveCamera()->SetPosition(0.0, 3.0, 7.0);
   renderer->GetActiveCamera()->SetFocalPoint(0.0, 0.5, 0.0);
+
+  vtkNew<vtkTextActor> text;
+  text->SetInput("stage skipping");
+  renderer->AddActor2D(text);
+  vtkNew<vtkLookupTable> lut;
+  lut->Build();
+  vtkNew<vtkScalarBarActor> scalarBar;
+  scalarBar->SetLookupTable(lut);
+  renderer->AddActor2D(scalarBar);
+  vtkNew<vtkCubeAxesActor> axes;
+  axes->SetBounds(-3.0, 3.0, 0.0, 1.6, -3.0, 3.0);
+  axes->SetCamera(renderer->GetActiveCamera());
+  renderer->AddActor(axes);
+  vtkNew<vtkLegendBoxActor> legend;
+  legend->SetNumberOfEntries(1);
+  sphere->Update();
+  double red[3] = { 1.0, 0.0, 0.0 };
+  legend->SetEntry(0, sphere->GetOutput(), "sphere", red);
+  renderer->AddActor2D(legend);
 
   vtkNew<vtkRenderWindow> window;
   window->SetSize(100, 100);
