@@ -6,18 +6,29 @@
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkDataObject.h"
+#include "vtkAbstractVolumeMapper.h"
+#include "vtkImageMapper3D.h"
+#include "vtkImageSlice.h"
 #include "vtkInformation.h"
 #include "vtkInformationDoubleVectorKey.h"
 #include "vtkInformationIntegerKey.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
 #include "vtkMapper.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkOpenGLPolyDataMapper.h"
+#include "vtkPlane.h"
+#include "vtkPlaneCollection.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPropCollection.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
+#include "vtkShaderProperty.h"
+#include "vtkTexture.h"
+#include "vtkUniforms.h"
+#include "vtkVolume.h"
 
 #include <algorithm>
 #include <chrono>
@@ -151,6 +162,68 @@ vtkInformation* EnsurePropertyKeys(vtkProp* prop)
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+/// Latest modification of an algorithm's inputs: every connection of every port (a glyph
+/// mapper's source, an image's pipeline), the data and the algorithm producing it.
+vtkMTimeType InputsTime(vtkAlgorithm* algorithm)
+{
+  vtkMTimeType t = 0;
+  for (int port = 0; algorithm && port < algorithm->GetNumberOfInputPorts(); ++port)
+  {
+    for (int c = 0; c < algorithm->GetNumberOfInputConnections(port); ++c)
+    {
+      if (vtkDataObject* data = algorithm->GetInputDataObject(port, c))
+      {
+        t = std::max(t, data->GetMTime());
+      }
+      if (vtkAlgorithm* producer = algorithm->GetInputAlgorithm(port, c))
+      {
+        t = std::max(t, producer->GetMTime());
+      }
+    }
+  }
+  return t;
+}
+
+/// What a mapper draws with beyond its own settings: the planes it clips with (moving a
+/// plane does not modify the mapper or its plane collection).
+vtkMTimeType ClippingTime(vtkAbstractMapper* mapper)
+{
+  vtkMTimeType t = 0;
+  if (vtkPlaneCollection* planes = mapper->GetClippingPlanes())
+  {
+    t = planes->GetMTime();
+    for (int i = 0; i < planes->GetNumberOfItems(); ++i)
+    {
+      t = std::max(t, planes->GetItem(i)->GetMTime());
+    }
+  }
+  return t;
+}
+
+/// The actor's textures' images and its shader uniforms, which its own time does not cover.
+vtkMTimeType MaterialTime(vtkActor* actor)
+{
+  vtkMTimeType t = 0;
+  if (vtkTexture* texture = actor->GetTexture())
+  {
+    t = std::max(t, InputsTime(texture));
+  }
+  for (const auto& named : actor->GetProperty()->GetAllTextures())
+  {
+    t = std::max(t, InputsTime(named.second));
+  }
+  if (vtkShaderProperty* shaders = actor->GetShaderProperty())
+  {
+    t = std::max({ t, shaders->GetMTime(), shaders->GetVertexCustomUniforms()->GetMTime(),
+      shaders->GetFragmentCustomUniforms()->GetMTime(),
+      shaders->GetGeometryCustomUniforms()->GetMTime() });
+  }
+  return t;
+}
+}
+
 vtkMTimeType SceneScan::ActorSignature(vtkActor* actor, vtkMTimeType* inputTime)
 {
   vtkMapper* mapper = actor->GetMapper();
@@ -160,7 +233,30 @@ vtkMTimeType SceneScan::ActorSignature(vtkActor* actor, vtkMTimeType* inputTime)
   {
     *inputTime = inputModified;
   }
-  return std::max({ actor->GetMTime(), mapper->GetMTime(), inputModified });
+  return std::max({ actor->GetMTime(), mapper->GetMTime(), inputModified, InputsTime(mapper),
+    ClippingTime(mapper), MaterialTime(actor) });
+}
+
+vtkMTimeType SceneScan::PropSignature(vtkProp* prop)
+{
+  vtkActor* actor = vtkActor::SafeDownCast(prop);
+  if (actor && actor->GetMapper())
+  {
+    return ActorSignature(actor);
+  }
+  // Images and volumes: their mapper and its inputs.
+  vtkAbstractMapper* mapper = nullptr;
+  if (vtkImageSlice* slice = vtkImageSlice::SafeDownCast(prop))
+  {
+    mapper = slice->GetMapper();
+  }
+  else if (vtkVolume* volume = vtkVolume::SafeDownCast(prop))
+  {
+    mapper = volume->GetMapper();
+  }
+  return mapper ? std::max({ prop->GetMTime(), mapper->GetMTime(), InputsTime(mapper),
+                    ClippingTime(mapper) })
+                : prop->GetMTime();
 }
 
 //------------------------------------------------------------------------------
@@ -416,9 +512,15 @@ std::vector<unsigned long long> SceneScan::FrameKeyOf(
   renderer->GetViewProps()->InitTraversal(it);
   while (vtkProp* prop = renderer->GetViewProps()->GetNextProp(it))
   {
-    vtkActor* actor = vtkActor::SafeDownCast(prop);
-    key.push_back(actor && actor->GetMapper() ? ActorSignature(actor) : prop->GetMTime());
+    key.push_back(PropSignature(prop));
     key.push_back(prop->GetVisibility());
+  }
+  // Every light VTK shades with (the light block holds the first 16 only).
+  vtkCollectionSimpleIterator lit;
+  renderer->GetLights()->InitTraversal(lit);
+  while (vtkLight* light = renderer->GetLights()->GetNextLight(lit))
+  {
+    key.push_back(light->GetMTime());
   }
   return key;
 }

@@ -106,9 +106,13 @@ public:
   /// Forget the remembered state (the next Unchanged() is false).
   void ForgetFrame() { this->FrameKey.clear(); }
 
-  /// Latest modification time of an actor, its mapper and the mapper's input (the input's
-  /// own into `inputTime`, when given).
+  /// Latest modification time of an actor and of what it is drawn from: its mapper, every
+  /// input of the mapper, the planes it clips with, its textures' images and its shader
+  /// uniforms (the first input's own time into `inputTime`, when given).
   static vtkMTimeType ActorSignature(vtkActor* actor, vtkMTimeType* inputTime = nullptr);
+  /// A prop's signature for the image key: actors as above, images and volumes with their
+  /// mappers' inputs, other props (overlays) by their own time.
+  static vtkMTimeType PropSignature(vtkProp* prop);
 
 private:
   static std::vector<unsigned long long> FrameKeyOf(vtkRenderer* renderer, vtkMTimeType settingsTime);
