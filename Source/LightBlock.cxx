@@ -9,9 +9,59 @@
 
 #include <cmath>
 #include <cstring>
+#include <set>
 
 namespace voxelgi
 {
+
+namespace
+{
+bool Finite(const double* v, int n)
+{
+  for (int i = 0; i < n; ++i)
+  {
+    if (!std::isfinite(v[i]))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+/// What makes a light unusable (empty: nothing): VTK's shading of such a light is undefined.
+std::string InvalidPart(vtkLight* light)
+{
+  const double* color = light->GetDiffuseColor();
+  if (!(light->GetIntensity() > 0.0) || !std::isfinite(light->GetIntensity()))
+  {
+    return "a negative or non-finite intensity";
+  }
+  if (!Finite(color, 3) || color[0] < 0.0 || color[1] < 0.0 || color[2] < 0.0)
+  {
+    return "a negative or non-finite colour";
+  }
+  double position[3], focal[3];
+  light->GetTransformedPosition(position);
+  light->GetTransformedFocalPoint(focal);
+  if (!Finite(position, 3) || !Finite(focal, 3))
+  {
+    return "a non-finite position or focal point";
+  }
+  const double* attenuation = light->GetAttenuationValues();
+  if (light->GetPositional() &&
+    (!Finite(attenuation, 3) || attenuation[0] < 0.0 || attenuation[1] < 0.0 ||
+      attenuation[2] < 0.0))
+  {
+    return "negative or non-finite attenuation";
+  }
+  const double shape[2] = { light->GetExponent(), light->GetConeAngle() };
+  if (light->GetPositional() && !Finite(shape, 2))
+  {
+    return "a non-finite spot exponent or cone angle";
+  }
+  return std::string();
+}
+}
 
 void LightBlock::Pack(vtkLight* light, const VoxelGrid& grid, Light& l)
 {
@@ -46,6 +96,7 @@ bool LightBlock::Gather(
   vtkRenderer* renderer, const VoxelGrid& grid, std::vector<std::string>& warnings)
 {
   int dropped = 0, invalid = 0;
+  std::set<std::string> reasons;
   // VTK creates its automatic headlight and places headlights and camera lights while
   // rendering; do both before reading the lights, or the first frame would see none.
   if (renderer->GetAutomaticLightCreation() && renderer->GetLights()->GetNumberOfItems() == 0)
@@ -65,11 +116,11 @@ bool LightBlock::Gather(
     {
       continue;
     }
-    const double* color = light->GetDiffuseColor();
-    if (!(light->GetIntensity() > 0.0) || !std::isfinite(light->GetIntensity()) ||
-      !(color[0] >= 0.0 && color[1] >= 0.0 && color[2] >= 0.0) || !std::isfinite(color[0] + color[1] + color[2]))
+    const std::string reason = InvalidPart(light);
+    if (!reason.empty())
     {
       ++invalid;
+      reasons.insert(reason);
       continue;
     }
     if (count == MaxLights)
@@ -84,8 +135,13 @@ bool LightBlock::Gather(
   block.Info[1] = renderer->GetTwoSidedLighting() ? 1 : 0;
   if (invalid > 0 && !this->WarnedInvalid)
   {
-    warnings.push_back(std::to_string(invalid) +
-      " light(s) with a negative or non-finite intensity or colour are left out of the GI.");
+    std::string list;
+    for (const std::string& reason : reasons)
+    {
+      list += (list.empty() ? "" : ", ") + reason;
+    }
+    warnings.push_back(std::to_string(invalid) + " light(s) with " + list +
+      " are left out of the GI.");
     this->WarnedInvalid = true;
   }
   if (dropped > 0 && !this->WarnedDropped)

@@ -429,9 +429,28 @@ const std::map<std::string, std::function<int()>>& Cases()
         s.Renderer->AddLight(light);
         vtkNew<vtkLight> good;
         s.Renderer->AddLight(good);
+        // NaN position, negative attenuation, NaN spot exponent: left out, each named.
+        const double nan = std::numeric_limits<double>::quiet_NaN();
+        vtkNew<vtkLight> lost;
+        lost->SetPosition(nan, 1.0, 1.0);
+        s.Renderer->AddLight(lost);
+        vtkNew<vtkLight> fading;
+        fading->SetPositional(true);
+        fading->SetAttenuationValues(1.0, -0.5, 0.0);
+        s.Renderer->AddLight(fading);
+        vtkNew<vtkLight> spot;
+        spot->SetPositional(true);
+        spot->SetConeAngle(30.0);
+        spot->SetExponent(nan);
+        s.Renderer->AddLight(spot);
         Messages global{ vtkOutputWindow::GetInstance() };
         s.Render();
+        VOXELGI_CHECK(s.Log.Has("4 light(s) with"), "no message: " << s.Log.Text);
         VOXELGI_CHECK(s.Log.Has("negative or non-finite intensity"), "no message: " << s.Log.Text);
+        VOXELGI_CHECK(s.Log.Has("non-finite position or focal point"), "no message: " << s.Log.Text);
+        VOXELGI_CHECK(s.Log.Has("negative or non-finite attenuation"), "no message: " << s.Log.Text);
+        VOXELGI_CHECK(s.Log.Has("non-finite spot exponent"), "no message: " << s.Log.Text);
+        VOXELGI_CHECK(s.GI->GetGIActive(), "the valid light did not light the scene");
         VOXELGI_CHECK(s.GI->GetAllocatedBytes(vtkVoxelGIPass::RESOURCE_EMISSION) == 0,
           "negative emission was accepted");
         VOXELGI_CHECK(Bounded(s.GI), "non-finite values");
