@@ -72,6 +72,8 @@ struct vtkVoxelGIPass::Internals
   bool WarnedUnlit = false;
   bool WarnedNoDelegate = false;
   vtkWeakPointer<vtkOpenGLRenderWindow> Window; // the window whose context holds the resources
+  vtkWeakPointer<vtkRenderer> Renderer; // the renderer the voxels and images belong to
+  bool WarnedShared = false;
   unsigned long WindowObserver = 0;
   bool ContextChecked = false;
   bool ContextOk = false;
@@ -295,6 +297,35 @@ void vtkVoxelGIPass::BeginFrame(const vtkRenderState* s)
 void vtkVoxelGIPass::Render(const vtkRenderState* s)
 {
   Internals& in = *this->Internal;
+  // One pass keeps the voxels and images of one renderer. A second renderer of the same
+  // window that shares it (viewports, layers) gets VTK's image: rebuilding for each in turn
+  // would cost a full voxelization per renderer per frame. The first renderer's results are
+  // left as they are. (Renderers of two windows take turns, each frame exact: a window's
+  // frames are whole.)
+  vtkRenderer* owner = in.Renderer;
+  if (owner && owner != s->GetRenderer() && owner->GetPass() == this &&
+    owner->GetRenderWindow() == s->GetRenderer()->GetRenderWindow())
+  {
+    if (!in.WarnedShared)
+    {
+      vtkErrorMacro(<< "This pass is set on two renderers of one window; it renders GI for the "
+                       "first only and VTK's image for the other. Give each renderer a pass of "
+                       "its own.");
+      in.WarnedShared = true;
+    }
+    if (this->DelegatePass)
+    {
+      this->DelegatePass->Render(s);
+      this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+    }
+    return;
+  }
+  if (owner != s->GetRenderer())
+  {
+    in.Renderer = s->GetRenderer();
+    in.Scan.Reset();
+    in.Traced = false;
+  }
   this->NumberOfRenderedProps = 0;
   in.Clock.Reset();
   in.Clock.SetTiming(this->TimeStages != 0);
