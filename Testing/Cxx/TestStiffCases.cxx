@@ -672,6 +672,51 @@ const std::map<std::string, std::function<int()>>& Cases()
         VOXELGI_CHECK(s.GI->GetGIActive(), "GI did not resume after the pick");
         return EXIT_SUCCESS;
       } },
+    { "ActorsReleasedThenRevoxelized",
+      [] {
+        // Releasing the actors' GL resources (VTK does so when props leave a window) must not
+        // change what the next voxelization writes: the albedo equals a fresh pass's.
+        Scene s;
+        vtkVoxelGIScenes::AddCornellBox(s.Renderer);
+        s.Render();
+        s.Window->Render();
+        vtkActorCollection* actors = s.Renderer->GetActors();
+        actors->InitTraversal();
+        while (vtkActor* actor = actors->GetNextActor())
+        {
+          actor->ReleaseGraphicsResources(s.Window);
+        }
+        s.GI->Invalidate();
+        s.Window->Render();
+        vtkNew<vtkImageData> after;
+        VOXELGI_CHECK(s.GI->GetVoxelVolume(vtkVoxelGIPass::VOLUME_ALBEDO, after), "no albedo");
+        vtkNew<vtkVoxelGIPass> fresh;
+        fresh->SetVoxelResolution(32);
+        s.Renderer->SetPass(fresh);
+        s.Window->Render();
+        vtkNew<vtkImageData> expected;
+        VOXELGI_CHECK(fresh->GetVoxelVolume(vtkVoxelGIPass::VOLUME_ALBEDO, expected), "no albedo");
+        vtkDataArray* a = after->GetPointData()->GetScalars();
+        vtkDataArray* b = expected->GetPointData()->GetScalars();
+        VOXELGI_CHECK(a->GetNumberOfTuples() == b->GetNumberOfTuples(), "grids differ");
+        vtkIdType differing = 0;
+        for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
+        {
+          for (int c = 0; c < 4; ++c)
+          {
+            if (a->GetComponent(i, c) != b->GetComponent(i, c))
+            {
+              ++differing;
+              break;
+            }
+          }
+        }
+        std::cout << differing << " voxels differ from a fresh pass" << std::endl;
+        VOXELGI_CHECK(differing == 0, differing << " voxels differ after the release");
+        s.Renderer->SetPass(s.GI);
+        fresh->ReleaseGraphicsResources(s.Window);
+        return EXIT_SUCCESS;
+      } },
     { "OnePassTwoWindows",
       [] {
         // One pass on two windows: each frame must equal what a pass of its own renders.
