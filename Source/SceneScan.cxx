@@ -277,6 +277,7 @@ bool SceneScan::Collect(vtkRenderer* renderer, std::vector<ActorRecord>& records
   std::map<std::string, int> leftOut; // visible 3D props VTK renders without GI, by reason
   bool anySpecular = false;
   vtkPropCollection* props = renderer->GetViewProps();
+  this->PropSignatures.clear();
   vtkCollectionSimpleIterator it;
   props->InitTraversal(it);
   while (vtkProp* prop = props->GetNextProp(it))
@@ -284,6 +285,15 @@ bool SceneScan::Collect(vtkRenderer* renderer, std::vector<ActorRecord>& records
     // Empty props (e.g. ParaView's selection and axes actors) are neither voxelized nor
     // worth a warning.
     const double* b = prop->GetVisibility() ? prop->GetBounds() : nullptr;
+    // After the bounds (they update the prop's pipeline) and the keys (VTK modifies a prop
+    // when it first gets property keys): the prop's signature, for the records and the key
+    // of the traced image alike.
+    EnsurePropertyKeys(prop);
+    vtkActor* actor = vtkActor::SafeDownCast(prop);
+    vtkMTimeType inputTime = 0;
+    const vtkMTimeType signature =
+      actor && actor->GetMapper() ? ActorSignature(actor, &inputTime) : PropSignature(prop);
+    this->PropSignatures.push_back(signature);
     if (!b || !vtkMath::AreBoundsInitialized(b))
     {
       continue;
@@ -301,12 +311,10 @@ bool SceneScan::Collect(vtkRenderer* renderer, std::vector<ActorRecord>& records
                             "out of the voxel grid.");
       continue;
     }
-    vtkActor* actor = static_cast<vtkActor*>(prop);
-    // Before reading the signature: VTK modifies a prop when it first gets property keys.
-    EnsurePropertyKeys(actor);
     ActorRecord record;
     record.Actor = actor;
-    record.Signature = ActorSignature(actor, &record.InputTime);
+    record.Signature = signature;
+    record.InputTime = inputTime;
     auto found = previous.find(actor);
     if (found == previous.end() || record.InputTime != found->second->InputTime)
     {
@@ -500,19 +508,24 @@ void SceneScan::RefreshSignatures()
 }
 
 //------------------------------------------------------------------------------
-std::vector<unsigned long long> SceneScan::FrameKeyOf(
-  vtkRenderer* renderer, vtkMTimeType settingsTime)
+std::vector<unsigned long long> SceneScan::FrameKeyOf(vtkRenderer* renderer,
+  vtkMTimeType settingsTime, const std::vector<vtkMTimeType>* signatures)
 {
   std::vector<unsigned long long> key{ renderer->GetMTime(), settingsTime,
     renderer->GetActiveCamera()->GetMTime() };
   int size[4];
   renderer->GetTiledSizeAndOrigin(size, size + 1, size + 2, size + 3);
   key.insert(key.end(), size, size + 4);
+  if (signatures && static_cast<int>(signatures->size()) != renderer->GetViewProps()->GetNumberOfItems())
+  {
+    signatures = nullptr;
+  }
   vtkCollectionSimpleIterator it;
   renderer->GetViewProps()->InitTraversal(it);
+  std::size_t i = 0;
   while (vtkProp* prop = renderer->GetViewProps()->GetNextProp(it))
   {
-    key.push_back(PropSignature(prop));
+    key.push_back(signatures ? (*signatures)[i++] : PropSignature(prop));
     key.push_back(prop->GetVisibility());
   }
   // Every light VTK shades with (the light block holds the first 16 only).
@@ -527,12 +540,13 @@ std::vector<unsigned long long> SceneScan::FrameKeyOf(
 
 bool SceneScan::Unchanged(vtkRenderer* renderer, vtkMTimeType settingsTime) const
 {
-  return !this->FrameKey.empty() && FrameKeyOf(renderer, settingsTime) == this->FrameKey;
+  return !this->FrameKey.empty() &&
+    FrameKeyOf(renderer, settingsTime, &this->PropSignatures) == this->FrameKey;
 }
 
 void SceneScan::RememberFrame(vtkRenderer* renderer, vtkMTimeType settingsTime)
 {
-  this->FrameKey = FrameKeyOf(renderer, settingsTime);
+  this->FrameKey = FrameKeyOf(renderer, settingsTime, nullptr);
 }
 
 }

@@ -96,8 +96,9 @@ public:
   double GetMilliseconds() const { return this->Milliseconds; }
 
   /// Whether the image traced last frame can be presented again: nothing it depends on
-  /// (renderer, camera, viewport, props, the pass's settings as `settingsTime`) changed
-  /// since RememberFrame().
+  /// (renderer, camera, viewport, props, lights, the pass's settings as `settingsTime`)
+  /// changed since RememberFrame(). Reads the props' signatures of this frame's Scan() (the
+  /// voxelization in between changes what it draws, not what the image was made from).
   bool Unchanged(vtkRenderer* renderer, vtkMTimeType settingsTime) const;
   /// Remember the state the frame's image shows, once it is drawn: what VTK modifies while
   /// drawing (a mapper creating its default lookup table, a pass giving a prop its keys) is
@@ -115,7 +116,10 @@ public:
   static vtkMTimeType PropSignature(vtkProp* prop);
 
 private:
-  static std::vector<unsigned long long> FrameKeyOf(vtkRenderer* renderer, vtkMTimeType settingsTime);
+  /// The key of the traced image: with `signatures` (one per view prop, in order), those
+  /// instead of reading the props again.
+  static std::vector<unsigned long long> FrameKeyOf(vtkRenderer* renderer,
+    vtkMTimeType settingsTime, const std::vector<vtkMTimeType>* signatures);
   /// Collect the visible opaque surface actors; false when there is none.
   bool Collect(vtkRenderer* renderer, std::vector<ActorRecord>& records, double bounds[6],
     std::vector<std::string>& warnings);
@@ -137,6 +141,7 @@ private:
   std::set<std::string> WarnedLeftOut; // kinds of props left out that were reported
   double Milliseconds = 0.0;
   std::vector<unsigned long long> FrameKey;
+  std::vector<vtkMTimeType> PropSignatures; // of every view prop, by the last Scan()
 };
 
 }
