@@ -5,6 +5,8 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
 #include "vtkDataObject.h"
 #include "vtkAbstractVolumeMapper.h"
 #include "vtkImageMapper3D.h"
@@ -83,27 +85,44 @@ bool PropUserDynamic(vtkProp* prop)
 }
 
 /// Warning for an actor whose input has NaN or Inf point coordinates, or empty.
+/// (The points of a polydata input, or of every polydata block of a composite input.)
 std::string NonFinitePoints(vtkActor* actor)
 {
-  vtkPolyData* poly = vtkPolyData::SafeDownCast(actor->GetMapper()->GetInputDataObject(0, 0));
-  vtkPoints* points = poly ? poly->GetPoints() : nullptr;
-  if (!points)
+  std::vector<vtkPoints*> pointSets;
+  vtkDataObject* input = actor->GetMapper()->GetInputDataObject(0, 0);
+  if (auto* composite = vtkCompositeDataSet::SafeDownCast(input))
   {
-    return std::string();
+    vtkSmartPointer<vtkCompositeDataIterator> it;
+    it.TakeReference(composite->NewIterator());
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+    {
+      if (auto* block = vtkPolyData::SafeDownCast(it->GetCurrentDataObject()))
+      {
+        pointSets.push_back(block->GetPoints());
+      }
+    }
   }
-  vtkIdType bad = 0;
-  double p[3];
-  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+  else if (auto* poly = vtkPolyData::SafeDownCast(input))
   {
-    points->GetPoint(i, p);
-    bad += (std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])) ? 0 : 1;
+    pointSets.push_back(poly->GetPoints());
+  }
+  vtkIdType bad = 0, total = 0;
+  double p[3];
+  for (vtkPoints* points : pointSets)
+  {
+    for (vtkIdType i = 0; points && i < points->GetNumberOfPoints(); ++i)
+    {
+      points->GetPoint(i, p);
+      bad += (std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])) ? 0 : 1;
+    }
+    total += points ? points->GetNumberOfPoints() : 0;
   }
   if (bad == 0)
   {
     return std::string();
   }
   std::ostringstream text;
-  text << "An actor has " << bad << " of " << points->GetNumberOfPoints()
+  text << "An actor has " << bad << " of " << total
        << " points with NaN or Inf coordinates; its triangles that use them are not voxelized.";
   return text.str();
 }

@@ -13,6 +13,7 @@
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkCellPicker.h"
+#include "vtkCompositePolyDataMapper2.h"
 #include "vtkDataObject.h"
 #include "vtkHardwareSelector.h"
 #include "vtkSelection.h"
@@ -22,6 +23,7 @@
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkLight.h"
+#include "vtkMultiBlockDataSet.h"
 #include "vtkLightCollection.h"
 #include "vtkMapper.h"
 #include "vtkNew.h"
@@ -342,6 +344,22 @@ const std::map<std::string, std::function<int()>>& Cases()
         s.Window->Render();
         VOXELGI_CHECK(s.Log.Has("points with NaN or Inf coordinates"), "no message: " << s.Log.Text);
         VOXELGI_CHECK(s.GI->GetGIActive(), "GI did not run for the valid actor");
+        // The same inside a block of a composite dataset (ParaView's mappers draw those).
+        Scene c;
+        vtkNew<vtkMultiBlockDataSet> blocks;
+        blocks->SetNumberOfBlocks(2);
+        blocks->SetBlock(0, Triangles({ dvec3(2, 0, 0), dvec3(3, 0, 0), dvec3(nan, 1, 0) }));
+        blocks->SetBlock(1, Triangles({ dvec3(2, 0, 1), dvec3(3, 0, 1), dvec3(2, 1, 1) }));
+        vtkNew<vtkCompositePolyDataMapper2> compositeMapper;
+        compositeMapper->SetInputDataObject(blocks);
+        vtkNew<vtkActor> compositeActor;
+        compositeActor->SetMapper(compositeMapper);
+        c.Renderer->AddActor(compositeActor);
+        AddBox(c.Renderer, 0, 1, 0, 1, 0, 1);
+        c.Window->Render();
+        VOXELGI_CHECK(c.Log.Has("1 of 6 points with NaN or Inf coordinates"),
+          "no message for the composite block: " << c.Log.Text);
+        VOXELGI_CHECK(c.GI->GetGIActive() && Bounded(c.GI), "GI did not run, or non-finite values");
         VOXELGI_CHECK(Bounded(s.GI), "non-finite values");
         return EXIT_SUCCESS;
       } },
