@@ -47,8 +47,6 @@ public:
   /// Free every copy's GL objects and the copies (the context current).
   void ReleaseGraphicsResources(vtkWindow* window);
 
-  std::size_t GetNumberOfCopies() const { return this->Copies.size(); }
-
 private:
   struct Copy
   {

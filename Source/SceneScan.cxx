@@ -3,12 +3,12 @@
 #include "Frame.h"
 #include "vtkVoxelGIPass.h"
 
+#include "vtkAbstractVolumeMapper.h"
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataObject.h"
-#include "vtkAbstractVolumeMapper.h"
 #include "vtkImageMapper3D.h"
 #include "vtkImageSlice.h"
 #include "vtkInformation.h"
@@ -256,12 +256,12 @@ vtkMTimeType SceneScan::ActorSignature(vtkActor* actor, vtkMTimeType* inputTime)
     ClippingTime(mapper), MaterialTime(actor) });
 }
 
-vtkMTimeType SceneScan::PropSignature(vtkProp* prop)
+vtkMTimeType SceneScan::PropSignature(vtkProp* prop, vtkMTimeType* inputTime)
 {
   vtkActor* actor = vtkActor::SafeDownCast(prop);
   if (actor && actor->GetMapper())
   {
-    return ActorSignature(actor);
+    return ActorSignature(actor, inputTime);
   }
   // Images and volumes: their mapper and its inputs.
   vtkAbstractMapper* mapper = nullptr;
@@ -308,10 +308,8 @@ bool SceneScan::Collect(vtkRenderer* renderer, std::vector<ActorRecord>& records
     // when it first gets property keys): the prop's signature, for the records and the key
     // of the traced image alike.
     EnsurePropertyKeys(prop);
-    vtkActor* actor = vtkActor::SafeDownCast(prop);
     vtkMTimeType inputTime = 0;
-    const vtkMTimeType signature =
-      actor && actor->GetMapper() ? ActorSignature(actor, &inputTime) : PropSignature(prop);
+    const vtkMTimeType signature = PropSignature(prop, &inputTime);
     this->PropSignatures.push_back(signature);
     if (!b || !vtkMath::AreBoundsInitialized(b))
     {
@@ -330,6 +328,7 @@ bool SceneScan::Collect(vtkRenderer* renderer, std::vector<ActorRecord>& records
                             "out of the voxel grid.");
       continue;
     }
+    vtkActor* actor = static_cast<vtkActor*>(prop);
     ActorRecord record;
     record.Actor = actor;
     record.Signature = signature;
@@ -350,6 +349,14 @@ bool SceneScan::Collect(vtkRenderer* renderer, std::vector<ActorRecord>& records
     anySpecular = anySpecular || actor->GetProperty()->GetSpecular() > 0.0;
     records.push_back(record);
   }
+  this->ReportLeftOut(leftOut, warnings);
+  this->AnySpecular = anySpecular;
+  return !records.empty();
+}
+
+void SceneScan::ReportLeftOut(
+  const std::map<std::string, int>& leftOut, std::vector<std::string>& warnings)
+{
   // Said once for each new kind of prop left out.
   std::ostringstream text;
   for (const auto& kind : leftOut)
@@ -363,8 +370,6 @@ bool SceneScan::Collect(vtkRenderer* renderer, std::vector<ActorRecord>& records
   {
     warnings.push_back("Rendered by VTK without voxel GI: " + text.str() + ".");
   }
-  this->AnySpecular = anySpecular;
-  return !records.empty();
 }
 
 //------------------------------------------------------------------------------

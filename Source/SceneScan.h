@@ -17,6 +17,7 @@
 
 #include <array>
 #include <cstddef>
+#include <map>
 #include <set>
 #include <string>
 #include <vector>
@@ -113,7 +114,7 @@ public:
   static vtkMTimeType ActorSignature(vtkActor* actor, vtkMTimeType* inputTime = nullptr);
   /// A prop's signature for the image key: actors as above, images and volumes with their
   /// mappers' inputs, other props (overlays) by their own time.
-  static vtkMTimeType PropSignature(vtkProp* prop);
+  static vtkMTimeType PropSignature(vtkProp* prop, vtkMTimeType* inputTime = nullptr);
 
 private:
   /// The key of the traced image: with `signatures` (one per view prop, in order), those
@@ -123,6 +124,8 @@ private:
   /// Collect the visible opaque surface actors; false when there is none.
   bool Collect(vtkRenderer* renderer, std::vector<ActorRecord>& records, double bounds[6],
     std::vector<std::string>& warnings);
+  /// Warn once about each new kind of prop left to VTK (`leftOut`: reason -> count).
+  void ReportLeftOut(const std::map<std::string, int>& leftOut, std::vector<std::string>& warnings);
   /// Compare with the accepted records: full rebuild, dynamic change, or nothing.
   void Compare(std::vector<ActorRecord>& records, bool autoDynamic, bool& full, bool& dynamic) const;
   /// Update policy: is a pending change rebuilt this frame?

@@ -207,7 +207,10 @@ void VoxelizePass::Run(const Frame& frame)
     }
   }
   ostate->PopFramebufferBindings();
-  this->Copies.Retain(*frame.Actors, frame.Window);
+  if (full)
+  {
+    this->Copies.Retain(*frame.Actors, frame.Window); // actors come and go in full rebuilds
+  }
 
   // Line and point primitives of mixed polydata cannot feed the triangle geometry shader;
   // GL rejects those draws (they have no area to voxelize). Do not leave the errors to VTK.

@@ -294,7 +294,29 @@ void vtkVoxelGIPass::BeginFrame(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
-void vtkVoxelGIPass::Render(const vtkRenderState* s)
+bool vtkVoxelGIPass::ViewportFits()
+{
+  Internals& in = *this->Internal;
+  // Every image of the frame has the viewport's size: beyond GL's limits none can be made.
+  const std::string tooLarge =
+    voxelgi::ImageSizeError("the viewport", in.Frame.Width, in.Frame.Height);
+  if (tooLarge.empty())
+  {
+    in.RefusedSize[0] = in.RefusedSize[1] = 0;
+    return true;
+  }
+  if (in.RefusedSize[0] != in.Frame.Width || in.RefusedSize[1] != in.Frame.Height)
+  {
+    vtkErrorMacro(<< "Voxel GI disabled for this frame: " << tooLarge
+                  << "; rendering without GI.");
+    in.RefusedSize[0] = in.Frame.Width;
+    in.RefusedSize[1] = in.Frame.Height;
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------
+bool vtkVoxelGIPass::ServeRenderer(vtkRenderer* renderer)
 {
   Internals& in = *this->Internal;
   // One pass keeps the voxels and images of one renderer. A second renderer of the same
@@ -303,8 +325,8 @@ void vtkVoxelGIPass::Render(const vtkRenderState* s)
   // left as they are. (Renderers of two windows take turns, each frame exact: a window's
   // frames are whole.)
   vtkRenderer* owner = in.Renderer;
-  if (owner && owner != s->GetRenderer() && owner->GetPass() == this &&
-    owner->GetRenderWindow() == s->GetRenderer()->GetRenderWindow())
+  if (owner && owner != renderer && owner->GetPass() == this &&
+    owner->GetRenderWindow() == renderer->GetRenderWindow())
   {
     if (!in.WarnedShared)
     {
@@ -313,20 +335,30 @@ void vtkVoxelGIPass::Render(const vtkRenderState* s)
                        "its own.");
       in.WarnedShared = true;
     }
-    if (this->DelegatePass)
-    {
-      this->DelegatePass->Render(s);
-      this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
-    }
-    return;
+    return false;
   }
-  if (owner != s->GetRenderer())
+  if (owner != renderer)
   {
-    in.Renderer = s->GetRenderer();
+    in.Renderer = renderer;
     in.Scan.Reset();
     in.Traced = false;
   }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkVoxelGIPass::Render(const vtkRenderState* s)
+{
+  Internals& in = *this->Internal;
   this->NumberOfRenderedProps = 0;
+  if (!this->ServeRenderer(s->GetRenderer()))
+  {
+    if (this->DelegatePass)
+    {
+      this->RenderDelegate(s);
+    }
+    return;
+  }
   in.Clock.Reset();
   in.Clock.SetTiming(this->TimeStages != 0);
   this->GIActive = false;
@@ -352,25 +384,8 @@ void vtkVoxelGIPass::Render(const vtkRenderState* s)
   {
     this->WatchWindow(renWin);
     this->BeginFrame(s);
-    // Every image of the frame has the viewport's size: beyond GL's limits none can be made.
-    const std::string tooLarge =
-      voxelgi::ImageSizeError("the viewport", in.Frame.Width, in.Frame.Height);
-    if (!tooLarge.empty())
-    {
-      if (in.RefusedSize[0] != in.Frame.Width || in.RefusedSize[1] != in.Frame.Height)
-      {
-        vtkErrorMacro(<< "Voxel GI disabled for this frame: " << tooLarge
-                      << "; rendering without GI.");
-        in.RefusedSize[0] = in.Frame.Width;
-        in.RefusedSize[1] = in.Frame.Height;
-      }
-    }
-    else
-    {
-      in.RefusedSize[0] = in.RefusedSize[1] = 0;
-      this->GIActive =
-        this->UpdateVoxels(voxelsChanged) && this->UpdateRadiance(voxelsChanged, radianceChanged);
-    }
+    this->GIActive = this->ViewportFits() && this->UpdateVoxels(voxelsChanged) &&
+      this->UpdateRadiance(voxelsChanged, radianceChanged);
   }
 
   const bool voxelView = this->DebugView >= DEBUG_VIEW_VOXEL_ALBEDO &&

@@ -534,6 +534,11 @@ protected:
   void WindowDeleted();
   /// Render VTK's own image.
   void RenderDelegate(const vtkRenderState* s);
+  /// Whether the frame's viewport fits GL's image size limits (else says so, once per size).
+  bool ViewportFits();
+  /// Take `renderer` as the one whose voxels and images the pass keeps; false (said once)
+  /// when another renderer of the same window still has the pass.
+  bool ServeRenderer(vtkRenderer* renderer);
   /// OpenGL 4.3 available? Reports a missing capability once.
   bool CheckContext(vtkRenderWindow* renWin);
   /// The frame the stages see: renderer, window, viewport and a snapshot of the settings.
