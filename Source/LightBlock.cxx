@@ -54,6 +54,12 @@ std::string InvalidPart(vtkLight* light)
   {
     return "negative or non-finite attenuation";
   }
+  if (light->GetPositional() && attenuation[0] == 0.0 && attenuation[1] == 0.0 &&
+    attenuation[2] == 0.0)
+  {
+    // VTK divides by the attenuation polynomial: its image of such a light is 0/0 and inf.
+    return "attenuation (0, 0, 0)";
+  }
   const double shape[2] = { light->GetExponent(), light->GetConeAngle() };
   if (light->GetPositional() && !Finite(shape, 2))
   {

@@ -26,6 +26,8 @@
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkRenderState.h"
+#include "vtkCameraPass.h"
+#include "vtkSSAOPass.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkRenderer.h"
 #include "vtkWeakPointer.h"
@@ -74,6 +76,7 @@ struct vtkVoxelGIPass::Internals
   vtkWeakPointer<vtkOpenGLRenderWindow> Window; // the window whose context holds the resources
   vtkWeakPointer<vtkRenderer> Renderer; // the renderer the voxels and images belong to
   bool WarnedShared = false;
+  bool WarnedCombination = false;
   unsigned long WindowObserver = 0;
   bool ContextChecked = false;
   bool ContextOk = false;
@@ -347,6 +350,52 @@ bool vtkVoxelGIPass::ServeRenderer(vtkRenderer* renderer)
 }
 
 //------------------------------------------------------------------------------
+bool vtkVoxelGIPass::PassesCombine(vtkRenderer* renderer)
+{
+  Internals& in = *this->Internal;
+  // vtkSSAOPass draws its delegate into a framebuffer of its own whose extra attachments
+  // (positions, normals) only VTK's opaque step writes, and blends its result into the
+  // framebuffer bound outside it: neither the G-buffer nor the present can sit on either side.
+  std::string reason;
+  if (vtkSSAOPass::SafeDownCast(this->DelegatePass))
+  {
+    reason = "its delegate is a vtkSSAOPass";
+  }
+  for (vtkRenderPass* pass = renderer->GetPass(); pass && pass != this && reason.empty();)
+  {
+    if (vtkSSAOPass::SafeDownCast(pass))
+    {
+      reason = "it is the delegate of a vtkSSAOPass";
+    }
+    else if (auto* processing = vtkImageProcessingPass::SafeDownCast(pass))
+    {
+      pass = processing->GetDelegatePass();
+    }
+    else if (auto* camera = vtkCameraPass::SafeDownCast(pass))
+    {
+      pass = camera->GetDelegatePass();
+    }
+    else
+    {
+      pass = nullptr;
+    }
+  }
+  if (reason.empty())
+  {
+    in.WarnedCombination = false;
+    return true;
+  }
+  if (!in.WarnedCombination)
+  {
+    vtkErrorMacro(<< "Voxel GI cannot run here: " << reason
+                  << " (screen-space AO needs VTK's own opaque framebuffer). Rendering "
+                     "without GI; the AmbientOcclusion setting is GI's own occlusion.");
+    in.WarnedCombination = true;
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------
 void vtkVoxelGIPass::Render(const vtkRenderState* s)
 {
   Internals& in = *this->Internal;
@@ -380,7 +429,8 @@ void vtkVoxelGIPass::Render(const vtkRenderState* s)
   }
   in.WarnedNoDelegate = false;
   // Hardware picking renders through the pass too: it must see VTK's plain render steps.
-  if (this->Enabled && renWin && !renderer->GetSelector() && this->CheckContext(renWin))
+  if (this->Enabled && renWin && !renderer->GetSelector() && this->PassesCombine(renderer) &&
+    this->CheckContext(renWin))
   {
     this->WatchWindow(renWin);
     this->BeginFrame(s);

@@ -539,6 +539,8 @@ protected:
   /// Take `renderer` as the one whose voxels and images the pass keeps; false (said once)
   /// when another renderer of the same window still has the pass.
   bool ServeRenderer(vtkRenderer* renderer);
+  /// False, with one error, where the render passes around or below this one cannot hold GI.
+  bool PassesCombine(vtkRenderer* renderer);
   /// OpenGL 4.3 available? Reports a missing capability once.
   bool CheckContext(vtkRenderWindow* renWin);
   /// The frame the stages see: renderer, window, viewport and a snapshot of the settings.

@@ -37,6 +37,8 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSphereSource.h"
+#include "vtkSSAOPass.h"
+#include "vtkRenderStepsPass.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkOpenGLState.h"
 #include "vtk_glew.h"
@@ -232,16 +234,20 @@ vtkSmartPointer<vtkFloatArray> Composite(vtkVoxelGIPass* gi)
 }
 
 // Largest difference between two images of the same size (infinite if either is missing).
-double MaxDifference(vtkFloatArray* a, vtkFloatArray* b)
+double MaxDifference(vtkDataArray* a, vtkDataArray* b)
 {
-  if (!a || !b || a->GetNumberOfValues() != b->GetNumberOfValues())
+  if (!a || !b || a->GetNumberOfValues() != b->GetNumberOfValues() ||
+    a->GetNumberOfComponents() != b->GetNumberOfComponents())
   {
     return 1e30;
   }
   double d = 0.0;
-  for (vtkIdType i = 0; i < a->GetNumberOfValues(); ++i)
+  for (vtkIdType t = 0; t < a->GetNumberOfTuples(); ++t)
   {
-    d = std::max(d, static_cast<double>(std::abs(a->GetValue(i) - b->GetValue(i))));
+    for (int c = 0; c < a->GetNumberOfComponents(); ++c)
+    {
+      d = std::max(d, std::abs(a->GetComponent(t, c) - b->GetComponent(t, c)));
+    }
   }
   return d;
 }
@@ -465,9 +471,14 @@ const std::map<std::string, std::function<int()>>& Cases()
         spot->SetConeAngle(30.0);
         spot->SetExponent(nan);
         s.Renderer->AddLight(spot);
+        vtkNew<vtkLight> unattenuated; // its radiance saturated the half floats before
+        unattenuated->SetPositional(true);
+        unattenuated->SetAttenuationValues(0.0, 0.0, 0.0);
+        s.Renderer->AddLight(unattenuated);
         Messages global{ vtkOutputWindow::GetInstance() };
         s.Render();
-        VOXELGI_CHECK(s.Log.Has("4 light(s) with"), "no message: " << s.Log.Text);
+        VOXELGI_CHECK(s.Log.Has("5 light(s) with"), "no message: " << s.Log.Text);
+        VOXELGI_CHECK(s.Log.Has("attenuation (0, 0, 0)"), "no message: " << s.Log.Text);
         VOXELGI_CHECK(s.Log.Has("negative or non-finite intensity"), "no message: " << s.Log.Text);
         VOXELGI_CHECK(s.Log.Has("non-finite position or focal point"), "no message: " << s.Log.Text);
         VOXELGI_CHECK(s.Log.Has("negative or non-finite attenuation"), "no message: " << s.Log.Text);
@@ -476,6 +487,10 @@ const std::map<std::string, std::function<int()>>& Cases()
         VOXELGI_CHECK(s.GI->GetAllocatedBytes(vtkVoxelGIPass::RESOURCE_EMISSION) == 0,
           "negative emission was accepted");
         VOXELGI_CHECK(Bounded(s.GI), "non-finite values");
+        // one light of intensity 1 on a box of albedo 0.8: no pixel near the half-float limit
+        vtkSmartPointer<vtkFloatArray> image = Composite(s.GI);
+        VOXELGI_CHECK(image && image->GetValueRange()[1] < 4.0,
+          "composite reaches " << (image ? image->GetValueRange()[1] : -1.0));
         return EXIT_SUCCESS;
       } },
     { "LightInsideGeometry",
@@ -565,6 +580,51 @@ const std::map<std::string, std::function<int()>>& Cases()
         for (vtkIdType i = 0; i < without->GetNumberOfValues(); ++i)
         {
           VOXELGI_CHECK(withPass->GetValue(i) == without->GetValue(i), "VTK's image not kept");
+        }
+        return EXIT_SUCCESS;
+      } },
+    { "ScreenSpaceAOCombined",
+      [] {
+        // vtkSSAOPass as the pass's delegate, and the pass as vtkSSAOPass's delegate: both
+        // are refused once and draw exactly what vtkSSAOPass around VTK's steps draws.
+        enum Arrangement { SSAO_ONLY, SSAO_IN_GI, GI_IN_SSAO };
+        auto render = [](Arrangement arrangement, vtkUnsignedCharArray* pixels) {
+          Scene s;
+          vtkVoxelGIScenes::AddCornellBox(s.Renderer);
+          Messages global{ vtkOutputWindow::GetInstance() };
+          vtkNew<vtkSSAOPass> ssao;
+          vtkNew<vtkRenderStepsPass> steps;
+          ssao->SetRadius(0.1);
+          ssao->SetDelegatePass(arrangement == GI_IN_SSAO ? static_cast<vtkRenderPass*>(s.GI)
+                                                          : steps.GetPointer());
+          if (arrangement == SSAO_IN_GI)
+          {
+            s.GI->SetDelegatePass(ssao);
+          }
+          s.Renderer->SetPass(arrangement == SSAO_IN_GI ? static_cast<vtkRenderPass*>(s.GI)
+                                                        : ssao.GetPointer());
+          s.Window->Render();
+          s.Window->Render();
+          s.Window->GetRGBACharPixelData(0, 0, 79, 79, 0, pixels);
+          const std::size_t first = s.Log.Text.find("Voxel GI cannot run here");
+          std::cout << "arrangement " << arrangement << ": " << s.Log.Text << global.Text
+                    << std::endl;
+          return global.Text.empty() && !s.GI->GetGIActive() &&
+            (arrangement == SSAO_ONLY
+                ? s.Log.Text.empty()
+                : first != std::string::npos &&
+                  s.Log.Text.find("Voxel GI cannot run here", first + 1) == std::string::npos &&
+                  s.Log.Has(arrangement == SSAO_IN_GI ? "its delegate is a vtkSSAOPass"
+                                                      : "the delegate of a vtkSSAOPass"));
+        };
+        vtkNew<vtkUnsignedCharArray> reference;
+        VOXELGI_CHECK(render(SSAO_ONLY, reference), "vtkSSAOPass alone");
+        for (Arrangement arrangement : { SSAO_IN_GI, GI_IN_SSAO })
+        {
+          vtkNew<vtkUnsignedCharArray> pixels;
+          VOXELGI_CHECK(render(arrangement, pixels), "not refused once, or other messages");
+          VOXELGI_CHECK(MaxDifference(reference, pixels) == 0.0,
+            "arrangement " << arrangement << " differs from vtkSSAOPass alone");
         }
         return EXIT_SUCCESS;
       } },
