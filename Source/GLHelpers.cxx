@@ -12,8 +12,12 @@
 #include "vtkTextureUnitManager.h"
 #include "vtk_glew.h"
 
+#include <sys/resource.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <cassert>
+#include <fstream>
 #include <regex>
 #include <cstring>
 #include <vector>
@@ -217,13 +221,19 @@ bool Volume3D::Allocate(unsigned int internalFormat, int resolution, int levels)
   this->Format = internalFormat;
   this->Size = resolution;
   this->LevelCount = levels;
-  this->ByteSize = 0;
+  this->ByteSize = StorageBytes(internalFormat, resolution, levels);
+  return true;
+}
+
+std::size_t Volume3D::StorageBytes(unsigned int internalFormat, int resolution, int levels)
+{
+  std::size_t bytes = 0;
   for (int level = 0; level < levels; ++level)
   {
     const std::size_t n = static_cast<std::size_t>(std::max(resolution >> level, 1));
-    this->ByteSize += n * n * n * BytesPerTexel(internalFormat);
+    bytes += n * n * n * BytesPerTexel(internalFormat);
   }
-  return true;
+  return bytes;
 }
 
 void Volume3D::BindImage(unsigned int unit, unsigned int access, int level) const
@@ -590,6 +600,72 @@ bool HasExtension(const char* name)
     }
   }
   return false;
+}
+
+namespace
+{
+/// A "Key: N kB" line of /proc/meminfo, in bytes (-1: absent).
+long long MemInfoBytes(const char* key)
+{
+  std::ifstream meminfo("/proc/meminfo");
+  std::string name;
+  long long kib = 0;
+  std::string unit;
+  while (meminfo >> name >> kib)
+  {
+    std::getline(meminfo, unit);
+    if (name == key)
+    {
+      return kib * 1024;
+    }
+  }
+  return -1;
+}
+
+/// Address space the process may still map under its RLIMIT_AS (-1: unlimited or unknown).
+long long AddressSpaceLeft()
+{
+  struct rlimit limit;
+  if (getrlimit(RLIMIT_AS, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY)
+  {
+    return -1;
+  }
+  std::ifstream statm("/proc/self/statm");
+  long long pages = 0;
+  if (!(statm >> pages))
+  {
+    return -1;
+  }
+  const long long used = pages * sysconf(_SC_PAGESIZE);
+  return std::max(static_cast<long long>(limit.rlim_cur) - used, 0LL);
+}
+}
+
+long long AvailableMemory(std::string& source)
+{
+  if (HasExtension("GL_NVX_gpu_memory_info"))
+  {
+    GLint kib = 0;
+    glGetIntegerv(0x9049 /* GL_GPU_MEMORY_INFO_CURRENT_AVAILABLE_VIDMEM_NVX */, &kib);
+    source = "free video memory, GL_NVX_gpu_memory_info";
+    return static_cast<long long>(kib) * 1024;
+  }
+  if (HasExtension("GL_ATI_meminfo"))
+  {
+    GLint kib[4] = { 0, 0, 0, 0 };
+    glGetIntegerv(0x87FC /* GL_TEXTURE_FREE_MEMORY_ATI */, kib);
+    source = "free texture memory, GL_ATI_meminfo";
+    return static_cast<long long>(kib[0]) * 1024;
+  }
+  const long long host = MemInfoBytes("MemAvailable:");
+  const long long address = AddressSpaceLeft();
+  if (address >= 0 && (host < 0 || address < host))
+  {
+    source = "address space left under the process's RLIMIT_AS";
+    return address;
+  }
+  source = "available host memory";
+  return host;
 }
 
 //------------------------------------------------------------------------------

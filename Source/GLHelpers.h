@@ -83,6 +83,8 @@ public:
 
   /// (Re)allocate `resolution`^3 texels of `internalFormat` with `levels` mip levels.
   bool Allocate(unsigned int internalFormat, int resolution, int levels = 1);
+  /// The bytes such an allocation holds.
+  static std::size_t StorageBytes(unsigned int internalFormat, int resolution, int levels = 1);
   bool IsAllocated() const { return this->Handle != 0; }
   int Levels() const { return this->LevelCount; }
   void BindImage(unsigned int unit, unsigned int access, int level = 0) const;
@@ -279,6 +281,12 @@ void ContextVersion(int& major, int& minor);
 
 /// Whether the current context lists `name` among its extensions.
 bool HasExtension(const char* name);
+
+/// Memory the current context can still allocate, in bytes, or -1 where nothing says.
+/// `source` names where the number came from: the driver's free video memory
+/// (GL_NVX_gpu_memory_info, GL_ATI_meminfo), else the host's available memory and the
+/// process's address-space limit (software rasterizers and integrated GPUs allocate there).
+long long AvailableMemory(std::string& source);
 
 /// Drain the GL error queue; returns the number of errors that were pending.
 int ClearErrors();

@@ -12,12 +12,28 @@
 namespace voxelgi
 {
 
+namespace
+{
+/// Isotropic mipmaps live in the radiance volume's own mip chain.
+int RadianceLevels(int resolution, const Settings& settings)
+{
+  return settings.AnisotropicMipmaps ? 1 : MipLevels(resolution);
+}
+}
+
+std::size_t LightVoxels::RequiredBytes(int resolution, const Settings& settings)
+{
+  return Volume3D::StorageBytes(
+           GL_RGBA16F, resolution, RadianceLevels(resolution, settings)) +
+    (settings.Bounces > 0 ? Volume3D::StorageBytes(GL_RGBA16F, resolution) : 0);
+}
+
 bool LightVoxels::Prepare(const Frame& frame, std::string& error)
 {
   const Settings& config = frame.Config;
   const int resolution = frame.Grid.Resolution;
-  const int levels = config.AnisotropicMipmaps ? 1 : MipLevels(resolution);
-  bool ok = this->Radiance.Allocate(GL_RGBA16F, resolution, levels);
+  bool ok =
+    this->Radiance.Allocate(GL_RGBA16F, resolution, RadianceLevels(resolution, config));
   if (config.Bounces > 0)
   {
     ok = ok && this->Direct.Allocate(GL_RGBA16F, resolution);

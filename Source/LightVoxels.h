@@ -18,6 +18,7 @@ class vtkWindow;
 namespace voxelgi
 {
 struct Frame;
+struct Settings;
 class ShadowMaps;
 class VoxelizePass;
 
@@ -33,6 +34,8 @@ public:
   /// Allocate the volumes for the frame's grid (a mip chain when mipmaps are isotropic, the
   /// direct volume when bouncing) and build the program for its occlusion mode.
   bool Prepare(const Frame& frame, std::string& error);
+  /// The bytes Prepare allocates for a grid of `resolution` with `settings`.
+  static std::size_t RequiredBytes(int resolution, const Settings& settings);
   /// Direct light and emission into the radiance (and direct) volume.
   void Run(const Frame& frame);
   /// Whether the radiance (after Mipmap and Bounce) was computed with the frame's voxels,

@@ -29,6 +29,13 @@ int MipLevels(int resolution)
   return levels;
 }
 
+std::size_t VoxelMipmap::RequiredBytes(int resolution, const Settings& settings)
+{
+  const int half = std::max(resolution / 2, 1);
+  return settings.AnisotropicMipmaps ? 6 * Volume3D::StorageBytes(GL_RGBA16F, half, MipLevels(half))
+                                     : 0;
+}
+
 bool VoxelMipmap::Prepare(const Frame& frame, std::string& error)
 {
   const int resolution = frame.Grid.Resolution;

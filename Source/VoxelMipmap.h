@@ -18,6 +18,7 @@ class vtkWindow;
 namespace voxelgi
 {
 struct Frame;
+struct Settings;
 class LightVoxels;
 
 class VoxelMipmap
@@ -30,6 +31,8 @@ public:
 
   /// Allocate the directional volumes for the frame's grid (anisotropic mipmaps only).
   bool Prepare(const Frame& frame, std::string& error);
+  /// The bytes Prepare allocates for a grid of `resolution` with `settings`.
+  static std::size_t RequiredBytes(int resolution, const Settings& settings);
   /// Rebuild all levels from the radiance volume.
   void Run(const Frame& frame);
   /// Run() without timing it (inside the bounces).

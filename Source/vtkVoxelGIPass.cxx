@@ -5,6 +5,7 @@
 #include "DebugView.h"
 #include "Frame.h"
 #include "GBufferPass.h"
+#include "GLHelpers.h"
 #include "LightBlock.h"
 #include "LightVoxels.h"
 #include "Present.h"
@@ -77,6 +78,24 @@ struct vtkVoxelGIPass::Internals
   vtkWeakPointer<vtkRenderer> Renderer; // the renderer the voxels and images belong to
   bool WarnedShared = false;
   bool WarnedCombination = false;
+  // The configuration whose stages could not be prepared (Refuse): settings' time, the
+  // scene's emission and the viewport. GI stays off, silently, while the frame matches it.
+  struct Configuration
+  {
+    vtkMTimeType Settings = 0;
+    bool Emission = false;
+    int Width = 0;
+    int Height = 0;
+    bool operator==(const Configuration& o) const
+    {
+      return Settings == o.Settings && Emission == o.Emission && Width == o.Width &&
+        Height == o.Height;
+    }
+  };
+  Configuration Current;
+  Configuration RefusedConfiguration;
+  bool HasRefused = false;
+  std::size_t FittingBytes = 0; // the last voxel memory need found to fit
   unsigned long WindowObserver = 0;
   bool ContextChecked = false;
   bool ContextOk = false;
@@ -251,6 +270,15 @@ unsigned long long vtkVoxelGIPass::GetAllocatedBytes(int resource) const
   }
 }
 
+unsigned long long vtkVoxelGIPass::GetRequiredVoxelMemoryBytes(bool emission)
+{
+  const voxelgi::Settings settings = voxelgi::Snapshot(this, false);
+  const int resolution = settings.VoxelResolution;
+  return voxelgi::VoxelizePass::RequiredBytes(resolution, emission) +
+    voxelgi::LightVoxels::RequiredBytes(resolution, settings) +
+    voxelgi::VoxelMipmap::RequiredBytes(resolution, settings);
+}
+
 unsigned long long vtkVoxelGIPass::GetVoxelMemoryBytes() const
 {
   const Internals& in = *this->Internal;
@@ -316,6 +344,62 @@ bool vtkVoxelGIPass::ViewportFits()
     in.RefusedSize[1] = in.Frame.Height;
   }
   return false;
+}
+
+//------------------------------------------------------------------------------
+bool vtkVoxelGIPass::MemoryFits(int resolution, bool emission)
+{
+  Internals& in = *this->Internal;
+  const std::size_t need = this->GetRequiredVoxelMemoryBytes(emission);
+  if (need == in.FittingBytes)
+  {
+    return true;
+  }
+  std::string source;
+  const long long available = voxelgi::AvailableMemory(source);
+  // What the pass holds now is freed before the new volumes are made.
+  const unsigned long long held = this->GetVoxelMemoryBytes();
+  if (available >= 0 && need > static_cast<unsigned long long>(available) + held)
+  {
+    const auto mib = [](unsigned long long bytes) { return bytes / (1024 * 1024); };
+    const voxelgi::Settings settings = voxelgi::Snapshot(this, false);
+    std::ostringstream msg;
+    msg << "VoxelResolution " << resolution << " needs " << mib(need)
+        << " MiB for its voxel volumes (voxelization "
+        << mib(voxelgi::VoxelizePass::RequiredBytes(resolution, emission)) << ", radiance "
+        << mib(voxelgi::LightVoxels::RequiredBytes(resolution, settings)) << ", mipmaps "
+        << mib(voxelgi::VoxelMipmap::RequiredBytes(resolution, settings)) << " MiB) but only "
+        << mib(available + held) << " MiB are free (" << source << ")";
+    this->Refuse(msg.str());
+    return false;
+  }
+  in.FittingBytes = need;
+  return true;
+}
+
+void vtkVoxelGIPass::Refuse(const std::string& error)
+{
+  Internals& in = *this->Internal;
+  if (!in.HasRefused || !(in.RefusedConfiguration == in.Current))
+  {
+    vtkErrorMacro(<< "Voxel GI disabled: " << error
+                  << ". Rendering without GI until a setting changes"
+                  << (error.find("VoxelResolution") != std::string::npos
+                         ? " (a lower VoxelResolution needs an eighth per halving)."
+                         : "."));
+  }
+  in.HasRefused = true;
+  in.RefusedConfiguration = in.Current;
+  in.FittingBytes = 0;
+  this->ReleaseStages(in.Window);
+  in.Traced = false;
+  in.Scan.Reset();
+}
+
+bool vtkVoxelGIPass::Refused() const
+{
+  const Internals& in = *this->Internal;
+  return in.HasRefused && in.RefusedConfiguration == in.Current;
 }
 
 //------------------------------------------------------------------------------
@@ -489,15 +573,29 @@ bool vtkVoxelGIPass::UpdateVoxels(bool& changed)
   }
   frame.AnySpecular = in.Scan.GetAnySpecular();
   changed = false;
-  if (!ok || !frame.Voxels.Run)
+  if (!ok)
   {
-    return ok;
+    return false;
+  }
+  const bool emission = frame.Voxels.Run ? frame.Voxels.Emission : in.Voxelize->HasEmission();
+  in.Current = { this->GetMTime(), emission, frame.Width, frame.Height };
+  if (this->Refused())
+  {
+    in.Scan.Reset();
+    return false;
+  }
+  if (!frame.Voxels.Run)
+  {
+    return true;
   }
   std::string error;
+  if (!this->MemoryFits(frame.Voxels.Grid.Resolution, emission))
+  {
+    return false;
+  }
   if (!in.Voxelize->Prepare(frame, error))
   {
-    vtkErrorMacro(<< "Voxel GI disabled for this frame: " << error << ".");
-    in.Scan.Reset();
+    this->Refuse(error);
     return false;
   }
   in.Scan.Accept(frame.Voxels, frame.Config);
@@ -566,7 +664,7 @@ bool vtkVoxelGIPass::LightAndBounce()
     (frame.Config.Bounces == 0 || in.Bounce.Prepare(frame, error));
   if (!ok)
   {
-    vtkErrorMacro(<< "Voxel GI disabled for this frame: " << error << ".");
+    this->Refuse(error);
     return false;
   }
   in.Lighting.Run(frame);
@@ -587,9 +685,11 @@ void vtkVoxelGIPass::RenderGI(bool reuse)
   {
     return;
   }
-  if (!reuse)
+  if (!reuse && !this->TraceFrame())
   {
-    this->TraceFrame();
+    this->GIActive = false;
+    this->RenderDelegate(frame.State);
+    return;
   }
   in.Traced = true;
 
@@ -617,7 +717,7 @@ void vtkVoxelGIPass::RenderVoxelView()
   in.Presenter.Run(in.Frame, in.Debug.GetImage(), nullptr);
 }
 
-void vtkVoxelGIPass::TraceFrame()
+bool vtkVoxelGIPass::TraceFrame()
 {
   Internals& in = *this->Internal;
   const voxelgi::Frame& frame = in.Frame;
@@ -625,8 +725,8 @@ void vtkVoxelGIPass::TraceFrame()
   if (!in.GBuffer->Prepare(frame, error) || !in.Trace.Prepare(frame, error) ||
     !in.Compositor.Prepare(frame, error))
   {
-    vtkErrorMacro(<< "Voxel GI could not trace this frame: " << error << ".");
-    return;
+    this->Refuse(error);
+    return false;
   }
   in.GBuffer->Run(frame);
   this->NumberOfRenderedProps += in.GBuffer->GetNumberOfRenderedProps();
@@ -636,6 +736,7 @@ void vtkVoxelGIPass::TraceFrame()
   in.Trace.Run(frame);
   in.Compositor.Run(frame);
   in.TracedSettings = this->GetMTime();
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -673,6 +774,20 @@ bool vtkVoxelGIPass::GetVoxelVolume(int volume, vtkImageData* image)
 void vtkVoxelGIPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   Internals& in = *this->Internal;
+  this->ReleaseStages(w);
+  in.Clock.ReleaseGraphicsResources();
+  in.Traced = false;
+  in.Scan.Reset();
+  in.ContextChecked = false;
+  if (this->DelegatePass)
+  {
+    this->DelegatePass->ReleaseGraphicsResources(w);
+  }
+}
+
+void vtkVoxelGIPass::ReleaseStages(vtkWindow* w)
+{
+  Internals& in = *this->Internal;
   in.Voxelize->ReleaseGraphicsResources(w);
   in.GridBlock.ReleaseGraphicsResources(w);
   in.Lights.ReleaseGraphicsResources(w);
@@ -685,14 +800,7 @@ void vtkVoxelGIPass::ReleaseGraphicsResources(vtkWindow* w)
   in.Compositor.ReleaseGraphicsResources(w);
   in.Debug.ReleaseGraphicsResources(w);
   in.Presenter.ReleaseGraphicsResources(w);
-  in.Clock.ReleaseGraphicsResources();
-  in.Traced = false;
-  in.Scan.Reset();
-  in.ContextChecked = false;
-  if (this->DelegatePass)
-  {
-    this->DelegatePass->ReleaseGraphicsResources(w);
-  }
+  in.FittingBytes = 0;
 }
 
 //------------------------------------------------------------------------------

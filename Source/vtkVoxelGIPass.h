@@ -42,6 +42,7 @@
 
 #include <cmath>  // for std::isnan
 #include <memory> // for std::unique_ptr
+#include <string> // for std::string
 
 // vtkSetClampMacro that refuses NaN (which passes any clamp) with a message naming the
 // setting, keeping its value.
@@ -113,8 +114,9 @@ public:
   ///@{
   /**
    * Voxels per axis of the voxel grid: a power of two in [16, 512] (other values are
-   * rounded to the nearest one). Memory grows with its cube: about 40 bytes per voxel
-   * (128: 84 MiB, 256: 670 MiB). Default: 128.
+   * rounded to the nearest one). Memory grows with its cube: about 60 bytes per voxel, 80
+   * in scenes with emissive props (128: 120 / 160 MiB, 256: 959 / 1279 MiB; see
+   * GetRequiredVoxelMemoryBytes()). Default: 128.
    */
   virtual void SetVoxelResolution(int resolution);
   vtkGetMacro(VoxelResolution, int);
@@ -480,6 +482,15 @@ public:
    */
   unsigned long long GetVoxelMemoryBytes() const;
 
+  /**
+   * GPU memory the voxel volumes need with the current settings, in bytes: what
+   * GetVoxelMemoryBytes() reports once a scene with (or without) emissive props has been
+   * rendered, shadow maps not included. Before allocating, the pass compares it with the
+   * memory the GL reports free; a configuration that does not fit is refused with one error
+   * and renders VTK's image until a setting changes.
+   */
+  unsigned long long GetRequiredVoxelMemoryBytes(bool emission);
+
   enum Resources
   {
     RESOURCE_VOXELIZATION = 0, ///< accumulators, flags, albedo and normal volumes
@@ -541,6 +552,14 @@ protected:
   bool ServeRenderer(vtkRenderer* renderer);
   /// False, with one error, where the render passes around or below this one cannot hold GI.
   bool PassesCombine(vtkRenderer* renderer);
+  /// Whether the voxel volumes of `resolution` fit the memory the GL reports free (counting
+  /// what the pass holds now); refuses the configuration if not.
+  bool MemoryFits(int resolution, bool emission);
+  /// A stage could not be prepared: say why once, free every GL resource of the stages and
+  /// render VTK's image until a setting, the scene's emission or the viewport changes.
+  void Refuse(const std::string& error);
+  /// Whether the frame's configuration was refused before.
+  bool Refused() const;
   /// OpenGL 4.3 available? Reports a missing capability once.
   bool CheckContext(vtkRenderWindow* renWin);
   /// The frame the stages see: renderer, window, viewport and a snapshot of the settings.
@@ -555,7 +574,10 @@ protected:
   /// GBuffer, ConeTrace and Composite (unless `reuse`: nothing changed since the last traced
   /// frame), then Present and VTK's remaining steps.
   void RenderGI(bool reuse);
-  void TraceFrame();
+  /// GBuffer, ConeTrace, Composite; false (refused) if their images cannot be made.
+  bool TraceFrame();
+  /// Free the GL resources of every stage (not the delegate's).
+  void ReleaseStages(vtkWindow* w);
   /// A voxel debug view over VTK's image.
   void RenderVoxelView();
 

@@ -44,9 +44,12 @@
 #include "vtk_glew.h"
 
 #include <dlfcn.h>
+#include <sys/resource.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
 #include <functional>
 #include <limits>
 #include <map>
@@ -581,6 +584,55 @@ const std::map<std::string, std::function<int()>>& Cases()
         {
           VOXELGI_CHECK(withPass->GetValue(i) == without->GetValue(i), "VTK's image not kept");
         }
+        return EXIT_SUCCESS;
+      } },
+    { "OutOfMemory",
+      [] {
+        // 256^3 voxels of an emissive scene under an address-space limit that leaves 256 MiB:
+        // refused before allocating, said once, nothing left allocated, VTK's image; GI
+        // again once the resolution fits.
+        Scene s;
+        vtkVoxelGIScenes::AddCornellBox(s.Renderer);
+        s.Window->Render();
+        VOXELGI_CHECK(s.GI->GetGIActive(), "GI did not run at 32^3: " << s.Log.Text);
+        const unsigned long long held = s.GI->GetVoxelMemoryBytes() -
+          s.GI->GetAllocatedBytes(vtkVoxelGIPass::RESOURCE_SHADOW_MAPS);
+        std::cout << "32^3 holds " << held << " bytes, predicted "
+                  << s.GI->GetRequiredVoxelMemoryBytes(true) << std::endl;
+        VOXELGI_CHECK(held == s.GI->GetRequiredVoxelMemoryBytes(true), "prediction differs");
+        struct rlimit before;
+        getrlimit(RLIMIT_AS, &before);
+        long long pages = 0;
+        std::ifstream("/proc/self/statm") >> pages;
+        struct rlimit limited = before;
+        limited.rlim_cur = static_cast<rlim_t>(pages * sysconf(_SC_PAGESIZE)) + (256u << 20);
+        setrlimit(RLIMIT_AS, &limited);
+        s.GI->SetVoxelResolution(256);
+        for (int frame = 0; frame < 3; ++frame)
+        {
+          s.Window->Render();
+        }
+        setrlimit(RLIMIT_AS, &before);
+        const std::size_t first = s.Log.Text.find("VoxelResolution 256 needs");
+        VOXELGI_CHECK(first != std::string::npos && s.Log.Has("MiB are free (address space") &&
+            s.Log.Has("until a setting changes"),
+          "no clear error: " << s.Log.Text);
+        VOXELGI_CHECK(s.Log.Text.find("Voxel GI disabled", first + 1) == std::string::npos,
+          "the error was repeated");
+        VOXELGI_CHECK(!s.GI->GetGIActive(), "GI reported active");
+        VOXELGI_CHECK(s.GI->GetVoxelMemoryBytes() == 0, "memory left allocated while GI is off");
+        vtkNew<vtkUnsignedCharArray> refused;
+        s.Window->GetRGBACharPixelData(0, 0, 79, 79, 0, refused);
+        Scene plain;
+        vtkVoxelGIScenes::AddCornellBox(plain.Renderer);
+        plain.GI->EnabledOff();
+        plain.Window->Render();
+        vtkNew<vtkUnsignedCharArray> without;
+        plain.Window->GetRGBACharPixelData(0, 0, 79, 79, 0, without);
+        VOXELGI_CHECK(MaxDifference(refused, without) == 0.0, "not VTK's image");
+        s.GI->SetVoxelResolution(32);
+        s.Window->Render();
+        VOXELGI_CHECK(s.GI->GetGIActive() && Bounded(s.GI), "GI did not come back");
         return EXIT_SUCCESS;
       } },
     { "ScreenSpaceAOCombined",
