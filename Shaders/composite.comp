@@ -1,5 +1,6 @@
-// Composite at the image's resolution, one invocation per pixel in 8x8 tiles: VTK's shaded colour (the direct term) minus what the
-// shadow cones found occluded, darkened by AO, plus the indirect light. The traced buffers
+// Composite at the image's resolution, one invocation per pixel in 8x8 tiles: VTK's shaded
+// colour minus what the shadow cones found occluded, its ambient term darkened by AO (never
+// the lights' direct term or emission), plus the indirect light. The traced buffers
 // may be at a lower resolution: each pixel then blends the four nearest traced samples with
 // bilinear weights times how well their surfaces match its own (position and normal), so that
 // indirect light does not bleed across depth or orientation edges.
@@ -9,6 +10,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 uniform sampler2D gbufferColor;
 uniform sampler2D gbufferNormal;
+uniform sampler2D gbufferAmbient;  // VTK's ambient term of non-emitters
 uniform sampler2D traceIndirect;   // indirect rgb, AO
 uniform sampler2D traceShadowed;   // occluded direct rgb
 uniform vec2 traceSize;            // texels of the traced buffers
@@ -78,7 +80,12 @@ void main()
   vec4 indirectAO = weightSum > 1e-6 ? indirectSum / weightSum : vec4(0.0, 0.0, 0.0, 1.0);
   vec3 shadowed = weightSum > 1e-6 ? shadowedSum / weightSum : vec3(0.0);
 
-  vec3 direct = max(color.rgb - shadowed, vec3(0.0)) * mix(1.0, indirectAO.a, aoStrength);
+  vec4 ambientSample = texelFetch(gbufferAmbient, pixel, 0);
+  vec3 ambient = ambientSample.a == 1.0 && !any(isnan(ambientSample.rgb))
+    ? clamp(ambientSample.rgb, vec3(0.0), color.rgb)
+    : vec3(0.0);
+  vec3 direct = max(color.rgb - ambient - shadowed, vec3(0.0)) +
+    ambient * mix(1.0, indirectAO.a, aoStrength);
   vec3 result = direct + indirectAO.rgb;
   if (compositeView == 1)
   {

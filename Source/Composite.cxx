@@ -44,7 +44,7 @@ void Composite::Run(const Frame& frame)
   ComputeProgram& p = this->Program;
   p.Use(frame.Window);
   ScopedTextures inputs({ this->GBuffer.GetColor(), this->GBuffer.GetNormal(),
-    this->GBuffer.GetDepth(), indirect, shadowed });
+    this->GBuffer.GetAmbient(), this->GBuffer.GetDepth(), indirect, shadowed });
   if (!(inputs.Complete()))
   {
     return;
@@ -54,6 +54,7 @@ void Composite::Run(const Frame& frame)
   p.SetMat4Array("voxelFromNDC", 1, gridFromNDC);
   p.SetInt("gbufferColor", this->GBuffer.GetColor()->GetTextureUnit());
   p.SetInt("gbufferNormal", this->GBuffer.GetNormal()->GetTextureUnit());
+  p.SetInt("gbufferAmbient", this->GBuffer.GetAmbient()->GetTextureUnit());
   p.SetInt("gbufferDepth", this->GBuffer.GetDepth()->GetTextureUnit());
   p.SetInt("traceIndirect", indirect->GetTextureUnit());
   p.SetInt("traceShadowed", shadowed->GetTextureUnit());

@@ -2,6 +2,7 @@
 
 #include "Frame.h"
 #include "GLHelpers.h"
+#include "SceneScan.h"
 #include "VoxelGIShaders.h"
 #include "vtkVoxelGIPass.h"
 
@@ -43,6 +44,7 @@ bool GBufferPass::Prepare(const Frame& frame, std::string&)
     this->Color = NewImageTexture(renWin, GL_RGBA16F, width, height);
     this->Normal = NewImageTexture(renWin, GL_RGBA16F, width, height);
     this->Material = NewImageTexture(renWin, GL_RGBA8, width, height);
+    this->Ambient = NewImageTexture(renWin, GL_RGBA16F, width, height);
     this->Depth = vtkSmartPointer<vtkTextureObject>::New();
     this->Depth->SetContext(renWin);
     this->Depth->SetMinificationFilter(vtkTextureObject::Nearest);
@@ -54,6 +56,7 @@ bool GBufferPass::Prepare(const Frame& frame, std::string&)
   this->Color->Resize(width, height);
   this->Normal->Resize(width, height);
   this->Material->Resize(width, height);
+  this->Ambient->Resize(width, height);
   this->Depth->Resize(width, height);
   if (frame.LitScene != this->LitScene)
   {
@@ -109,10 +112,11 @@ void GBufferPass::Begin()
   this->Framebuffer->AddColorAttachment(0, this->Color);
   this->Framebuffer->AddColorAttachment(1, this->Normal);
   this->Framebuffer->AddColorAttachment(2, this->Material);
+  this->Framebuffer->AddColorAttachment(3, this->Ambient);
   this->Framebuffer->AddDepthAttachment(this->Depth);
-  this->Framebuffer->ActivateDrawBuffers(3);
+  this->Framebuffer->ActivateDrawBuffers(4);
   this->Framebuffer->StartNonOrtho(this->Color->GetWidth(), this->Color->GetHeight());
-  for (unsigned int i = 0; i < 2; ++i)
+  for (unsigned int i = 0; i < 3; ++i)
   {
     this->BlendWasEnabled[i] = glIsEnabledi(GL_BLEND, i + 1) == GL_TRUE;
   }
@@ -124,11 +128,12 @@ void GBufferPass::DisableDataBlending()
   // VTK blends its opaque pass; the data attachments must be written as they are.
   glDisablei(GL_BLEND, 1);
   glDisablei(GL_BLEND, 2);
+  glDisablei(GL_BLEND, 3);
 }
 
 void GBufferPass::End()
 {
-  for (unsigned int i = 0; i < 2; ++i)
+  for (unsigned int i = 0; i < 3; ++i)
   {
     if (this->BlendWasEnabled[i])
     {
@@ -160,6 +165,11 @@ bool GBufferPass::PostReplaceShaderValues(
   {
     defines += "#define VOXELGI_HAS_SPECULAR\n";
   }
+  if (fragment.find("vec3 ambientColor") != std::string::npos)
+  {
+    defines += "#define VOXELGI_HAS_AMBIENT\n";
+  }
+  defines += "uniform float voxelgiOccludable;\n";
   vtkActor* actor = vtkActor::SafeDownCast(prop);
   if (!this->LitScene && actor && actor->GetProperty()->GetLighting())
   {
@@ -175,10 +185,18 @@ bool GBufferPass::PostReplaceShaderValues(
 }
 
 bool GBufferPass::SetShaderParameters(
-  vtkShaderProgram*, vtkAbstractMapper* mapper, vtkProp*, vtkOpenGLVertexArrayObject*)
+  vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop, vtkOpenGLVertexArrayObject*)
 {
   // Polydata mappers write all attachments, other mappers only the colour.
-  this->Framebuffer->ActivateDrawBuffers(vtkOpenGLPolyDataMapper::SafeDownCast(mapper) ? 3 : 1);
+  const bool polyData = vtkOpenGLPolyDataMapper::SafeDownCast(mapper) != nullptr;
+  this->Framebuffer->ActivateDrawBuffers(polyData ? 4 : 1);
+  if (polyData)
+  {
+    // An emitter's ambient colour is its emission, which nothing occludes.
+    const std::array<double, 3> emission = PropEmission(prop);
+    program->SetUniformf("voxelgiOccludable",
+      emission[0] > 0.0 || emission[1] > 0.0 || emission[2] > 0.0 ? 0.0f : 1.0f);
+  }
   // Before every draw: VTK's state handling may have re-enabled blending for all buffers.
   DisableDataBlending();
   return true;
@@ -188,7 +206,7 @@ bool GBufferPass::SetShaderParameters(
 void GBufferPass::ReleaseGraphicsResources(vtkWindow* window)
 {
   for (vtkTextureObject* texture : { this->Color.Get(), this->Normal.Get(), this->Material.Get(),
-         this->Depth.Get() })
+         this->Ambient.Get(), this->Depth.Get() })
   {
     if (texture)
     {
@@ -200,7 +218,7 @@ void GBufferPass::ReleaseGraphicsResources(vtkWindow* window)
     this->Framebuffer->ReleaseGraphicsResources(window);
   }
   this->Framebuffer = nullptr;
-  this->Color = this->Normal = this->Material = this->Depth = nullptr;
+  this->Color = this->Normal = this->Material = this->Ambient = this->Depth = nullptr;
 }
 
 }

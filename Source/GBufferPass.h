@@ -42,6 +42,8 @@ public:
   vtkTextureObject* GetColor() const { return this->Color; }
   vtkTextureObject* GetNormal() const { return this->Normal; }
   vtkTextureObject* GetMaterial() const { return this->Material; }
+  /// VTK's ambient term of surfaces that do not emit: the part AO may darken.
+  vtkTextureObject* GetAmbient() const { return this->Ambient; }
   vtkTextureObject* GetDepth() const { return this->Depth; }
 
   // Shader injection into the mappers (see vtkOpenGLRenderPass).
@@ -68,8 +70,9 @@ private:
   vtkSmartPointer<vtkTextureObject> Color;
   vtkSmartPointer<vtkTextureObject> Normal;
   vtkSmartPointer<vtkTextureObject> Material;
+  vtkSmartPointer<vtkTextureObject> Ambient;
   vtkSmartPointer<vtkTextureObject> Depth;
-  bool BlendWasEnabled[2] = { false, false };
+  bool BlendWasEnabled[3] = { false, false, false };
   bool LitScene = true;
   vtkRenderPass* Opaque = nullptr; // what Render() runs this frame
   // Camera + lights + opaque steps of a vtkRenderStepsPass delegate.

@@ -308,8 +308,11 @@ public:
 
   ///@{
   /**
-   * How much the cone-traced ambient occlusion darkens VTK's shading, in [0, 1]
-   * (0: AO off). Default: 0.5.
+   * How much the cone-traced ambient occlusion darkens VTK's ambient term (the property's
+   * ambient coefficient times its ambient colour), in [0, 1] (0: AO off). The lights' direct
+   * light, the cone-traced indirect light (occluded by the cones themselves) and emitters'
+   * light are never darkened by it. Default: 1 (the ambient term stands for light from all
+   * around, which occluders block entirely).
    */
   vtkVoxelGISetClampMacro(AmbientOcclusionStrength, double, 0.0, 1.0);
   vtkGetMacro(AmbientOcclusionStrength, double);

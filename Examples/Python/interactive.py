@@ -28,7 +28,7 @@ def on_key(interactor, gi, window):
     if key == "g":
         gi.SetEnabled(not gi.GetEnabled())
     elif key == "o":
-        gi.SetAmbientOcclusionStrength(0.0 if gi.GetAmbientOcclusionStrength() > 0 else 0.5)
+        gi.SetAmbientOcclusionStrength(0.0 if gi.GetAmbientOcclusionStrength() > 0 else 1.0)
     elif key == "s":
         gi.SetSpecularCone(not gi.GetSpecularCone())
     elif key == "v":

@@ -7,7 +7,6 @@
 
 #include "vtkFloatArray.h"
 #include "vtkNew.h"
-#include "vtkRegressionTestImage.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 
@@ -41,5 +40,5 @@ int TestGICornell(int argc, char* argv[])
   VOXELGI_CHECK(rightGreen > 1.2 * rightRed, "no green bleeding next to the green wall");
   VOXELGI_CHECK(leftRed > 0.01 && rightGreen > 0.01, "indirect light too weak to see");
 
-  return voxelgi_test::ImageMatches(vtkRegressionTestImage(window));
+  return voxelgi_test::ImageMatches(argc, argv, window);
 }

@@ -6,7 +6,6 @@
 #include "vtkVoxelGIScenes.h"
 
 #include "vtkNew.h"
-#include "vtkRegressionTestImage.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkUnsignedCharArray.h"
@@ -45,5 +44,5 @@ int TestGIDisabled(int argc, char* argv[])
   }
   std::cout << differing << " of " << plain->GetNumberOfValues() << " bytes differ" << std::endl;
   VOXELGI_CHECK(differing == 0, "GI-disabled image differs from plain VTK");
-  return voxelgi_test::ImageMatches(vtkRegressionTestImage(window));
+  return voxelgi_test::ImageMatches(argc, argv, window);
 }

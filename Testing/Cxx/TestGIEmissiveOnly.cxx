@@ -11,7 +11,6 @@
 #include "vtkPointData.h"
 #include "vtkNew.h"
 #include "vtkProperty.h"
-#include "vtkRegressionTestImage.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 
@@ -56,5 +55,5 @@ int TestGIEmissiveOnly(int argc, char* argv[])
             << std::endl;
   VOXELGI_CHECK(under > 0.1, "the emissive panel does not light the floor");
   VOXELGI_CHECK(under > 5.0 * far, "indirect light does not fall off away from the panel");
-  return voxelgi_test::ImageMatches(vtkRegressionTestImage(window));
+  return voxelgi_test::ImageMatches(argc, argv, window);
 }

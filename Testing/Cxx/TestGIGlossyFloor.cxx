@@ -12,7 +12,6 @@
 #include "vtkLight.h"
 #include "vtkNew.h"
 #include "vtkProperty.h"
-#include "vtkRegressionTestImage.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 
@@ -62,5 +61,5 @@ int TestGIGlossyFloor(int argc, char* argv[])
             << "); far side r = " << sideRed << std::endl;
   VOXELGI_CHECK(red > 2.0 * green, "no red reflection of the block in the floor");
   VOXELGI_CHECK(red > 2.0 * sideRed, "the reflection is not localized");
-  return voxelgi_test::ImageMatches(vtkRegressionTestImage(window));
+  return voxelgi_test::ImageMatches(argc, argv, window);
 }

@@ -8,7 +8,6 @@
 #include "vtkCubeSource.h"
 #include "vtkLightCollection.h"
 #include "vtkNew.h"
-#include "vtkRegressionTestImage.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSphereSource.h"
@@ -45,5 +44,5 @@ int TestGIHeadlight(int argc, char* argv[])
   VOXELGI_CHECK(gi->GetGIActive(), "GI did not run");
   VOXELGI_CHECK(renderer->GetLights()->GetNumberOfItems() == 1, "no automatic headlight");
   VOXELGI_CHECK(voxelgi_test::AllFinite(gi), "non-finite values");
-  return voxelgi_test::ImageMatches(vtkRegressionTestImage(window));
+  return voxelgi_test::ImageMatches(argc, argv, window);
 }

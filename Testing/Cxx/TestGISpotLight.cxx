@@ -12,7 +12,6 @@
 #include "vtkLight.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
-#include "vtkRegressionTestImage.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 
@@ -70,5 +69,5 @@ int TestGISpotLight(int argc, char* argv[])
             << "), outside " << outside << std::endl;
   VOXELGI_CHECK(std::abs(inside - expected) < 0.01 * expected, "spot attenuation differs");
   VOXELGI_CHECK(outside == 0.0, "light outside the spot cone");
-  return voxelgi_test::ImageMatches(vtkRegressionTestImage(window));
+  return voxelgi_test::ImageMatches(argc, argv, window);
 }

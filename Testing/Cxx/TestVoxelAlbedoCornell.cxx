@@ -5,7 +5,6 @@
 #include "vtkVoxelGIScenes.h"
 
 #include "vtkNew.h"
-#include "vtkRegressionTestImage.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 
@@ -28,5 +27,5 @@ int TestVoxelAlbedoCornell(int argc, char* argv[])
     return EXIT_FAILURE;
   }
 
-  return voxelgi_test::ImageMatches(vtkRegressionTestImage(window));
+  return voxelgi_test::ImageMatches(argc, argv, window);
 }

@@ -13,7 +13,6 @@
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPolyDataMapper.h"
-#include "vtkRegressionTestImage.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSphereSource.h"
@@ -85,5 +84,5 @@ int TestVoxelScalarColors(int argc, char* argv[])
   // A voxel averages the colours over its extent (1/16 of the scalar range here).
   VOXELGI_CHECK(meanError < 0.05, "voxel colours differ from the lookup table");
 
-  return voxelgi_test::ImageMatches(vtkRegressionTestImage(window));
+  return voxelgi_test::ImageMatches(argc, argv, window);
 }

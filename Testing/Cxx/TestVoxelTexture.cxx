@@ -13,7 +13,6 @@
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
 #include "vtkPolyDataMapper.h"
-#include "vtkRegressionTestImage.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkTexture.h"
@@ -83,5 +82,5 @@ int TestVoxelTexture(int argc, char* argv[])
       VOXELGI_CHECK(std::abs(rgba[c] - quadrants[q][c]) <= 2, "quadrant " << q << " channel " << c);
     }
   }
-  return voxelgi_test::ImageMatches(vtkRegressionTestImage(window));
+  return voxelgi_test::ImageMatches(argc, argv, window);
 }

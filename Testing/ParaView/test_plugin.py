@@ -57,6 +57,12 @@ for arg in ("-V", baseline, "-T", output_dir):
     testing.AddArgument(arg)
 if testing.RegressionTest(reader, 10.0) != vtkTesting.PASSED:
     failures.append("screenshot does not match " + baseline)
+else:
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Python"))
+    from strict_image import differs
+    problem = differs(baseline, rendered)
+    if problem:
+        failures.append(problem)
 
 # every setting of the table is a view property that reaches the pass
 with open(table_path) as f:

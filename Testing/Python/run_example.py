@@ -1,7 +1,7 @@
 """Runs an example script that writes a PNG and compares the PNG with a baseline through
-vtkTesting (the same comparison as VTK's C++ regression tests). Exits non-zero when the
-images differ or the baseline is missing (the rendered image is then left in the output
-directory for review).
+vtkTesting (the same comparison as VTK's C++ regression tests), then strictly
+(strict_image.py). Exits non-zero when the images differ or the baseline is missing (the
+rendered image is then left in the output directory for review).
 
     run_example.py SCRIPT BASELINE OUTPUT_DIR [SCRIPT_ARGS_BEFORE_OUTPUT...]
 """
@@ -11,6 +11,8 @@ import sys
 
 from vtkmodules.vtkIOImage import vtkPNGReader
 from vtkmodules.vtkTestingRendering import vtkTesting
+
+from strict_image import differs
 
 
 def main():
@@ -29,6 +31,9 @@ def main():
     result = testing.RegressionTest(reader, 10.0)
     if result != vtkTesting.PASSED:
         sys.exit("image of %s does not match %s (see %s)" % (script, baseline, output_dir))
+    problem = differs(baseline, output)
+    if problem:
+        sys.exit("image of %s: %s" % (script, problem))
     print("image matches", baseline)
 
 
