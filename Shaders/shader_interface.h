@@ -14,14 +14,16 @@
 #define VOXELGI_GRID_BLOCK_BINDING 1  /* voxel_grid.glsl */
 
 /* Shader storage bindings 0, 1, ...: one per channel of the voxelization sums
-   (voxel_common.glsl), count, albedo rgb, normal xyz, then emission rgb when present. */
+   (voxel_common.glsl), count, albedo rgb, normal xyz, then when present emission rgb (the
+   largest emitted radiance of the voxel's fragments, float bits) and the count of emitting
+   fragments. */
 #define VOXELGI_BASE_CHANNELS 7
-#define VOXELGI_EMISSION_CHANNELS 3
+#define VOXELGI_EMISSION_CHANNELS 4
 
 /* Shader storage binding of the occupied-brick list (brick_list.glsl). A brick is one work
    group of the per-voxel stages, VOXELGI_LOCAL_SIZE^3 voxels: the resolve lists the occupied
    ones, and the clear and the bounce run on those alone (an indirect dispatch). */
-#define VOXELGI_BRICK_LIST_BINDING 10
+#define VOXELGI_BRICK_LIST_BINDING 11
 
 /* Image units of the voxelization stage. */
 #define VOXELGI_FLAG_IMAGE_UNIT 0

@@ -1,9 +1,14 @@
 // Shared by the voxelization fragment code (GLSL 1.50 + extensions) and the compute stages
-// (GLSL 4.30). VOXEL_CHANNELS is defined by the host: 7 without emission, 10 with it.
+// (GLSL 4.30). VOXEL_CHANNELS is defined by the host: 7 without emission, 11 with it.
 //
 // Voxelization accumulates exact integer sums of 8-bit quantized values, one uint per voxel
 // and channel, so the mean stays exact up to 2^32 / 255 (16.8 million) fragments per voxel
-// instead of overflowing at 255 as a packed RGBA8 running average would.
+// instead of overflowing at 255 as a packed RGBA8 running average would. Emission is not
+// quantized: each channel keeps the largest radiance of the voxel's emitting fragments as
+// float bits (atomicMax orders non-negative floats' bits as the floats), and a fourth channel
+// counts the emitting fragments; the voxel emits that radiance times their share of its
+// fragments. Exact where one emitter covers the voxel, whatever its radiance relative to
+// others; where emitters of different radiance share a voxel the brighter one counts.
 // One buffer per channel, bound at consecutive points in this order; separate blocks rather
 // than an array of blocks, which some compilers only index by literal constants.
 layout(std430, binding = 0) buffer VoxelCountBuffer { uint voxelCount[]; };
@@ -17,6 +22,7 @@ layout(std430, binding = 6) buffer VoxelNormalZBuffer { uint voxelNormalZ[]; };
 layout(std430, binding = 7) buffer VoxelEmissionRBuffer { uint voxelEmissionR[]; };
 layout(std430, binding = 8) buffer VoxelEmissionGBuffer { uint voxelEmissionG[]; };
 layout(std430, binding = 9) buffer VoxelEmissionBBuffer { uint voxelEmissionB[]; };
+layout(std430, binding = 10) buffer VoxelEmissionCountBuffer { uint voxelEmissionCount[]; };
 #endif
 
 #include "voxel_grid.glsl"

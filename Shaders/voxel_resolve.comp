@@ -10,7 +10,6 @@ layout(rgba8, binding = 1) uniform writeonly image3D voxelAlbedo;
 layout(rgba8, binding = 2) uniform writeonly image3D voxelNormal;
 #if VOXEL_CHANNELS > VOXELGI_BASE_CHANNELS
 layout(rgba16f, binding = 3) uniform writeonly image3D voxelEmission;
-uniform float emissionScale;
 #endif
 
 
@@ -40,7 +39,9 @@ void main()
     float len = length(m);
     normal = vec4((len > 1e-3 ? m / len : vec3(0.0)) * 0.5 + 0.5, 1.0);
 #if VOXEL_CHANNELS > VOXELGI_BASE_CHANNELS
-    emission = min(voxelMean(voxelEmissionR[i], voxelEmissionG[i], voxelEmissionB[i], n) * emissionScale, vec3(VOXELGI_HALF_MAX));
+    vec3 brightest = vec3(uintBitsToFloat(voxelEmissionR[i]), uintBitsToFloat(voxelEmissionG[i]),
+      uintBitsToFloat(voxelEmissionB[i]));
+    emission = brightest * (float(voxelEmissionCount[i]) / n);
 #endif
   }
   imageStore(voxelAlbedo, v, albedo);

@@ -3,7 +3,7 @@
 #include "voxel_common.glsl"
 
 uniform int voxelStaticPass;  // 1: marks the flag volume; 0: dynamic, leaves static voxels alone
-uniform vec3 voxelEmission;   // this actor's emission divided by the scene's emission scale
+uniform vec3 voxelEmission;   // this actor's emitted radiance (finite, non-negative)
 layout(r8ui, binding = VOXELGI_FLAG_IMAGE_UNIT) uniform uimage3D voxelFlag;
 
 flat in int voxelAxis;
@@ -48,9 +48,14 @@ void voxelStore(ivec3 v, vec4 color)
   atomicAdd(voxelNormalY[i], voxelQuantize(n.y));
   atomicAdd(voxelNormalZ[i], voxelQuantize(n.z));
 #if VOXEL_CHANNELS > VOXELGI_BASE_CHANNELS
-  atomicAdd(voxelEmissionR[i], voxelQuantize(voxelEmission.r));
-  atomicAdd(voxelEmissionG[i], voxelQuantize(voxelEmission.g));
-  atomicAdd(voxelEmissionB[i], voxelQuantize(voxelEmission.b));
+  vec3 e = clamp(voxelEmission, 0.0, VOXELGI_HALF_MAX);
+  if (any(greaterThan(e, vec3(0.0))))
+  {
+    atomicMax(voxelEmissionR[i], floatBitsToUint(e.r));
+    atomicMax(voxelEmissionG[i], floatBitsToUint(e.g));
+    atomicMax(voxelEmissionB[i], floatBitsToUint(e.b));
+    atomicAdd(voxelEmissionCount[i], 1u);
+  }
 #endif
 }
 

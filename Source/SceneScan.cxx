@@ -455,19 +455,16 @@ bool SceneScan::Scan(
   }
   bool full = false, dynamic = false;
   this->Compare(records, settings.AutoDynamic, full, dynamic);
-  double emissionScale = 0.0;
+  bool emission = false;
   for (const ActorRecord& record : records)
   {
-    emissionScale = std::max(
-      { emissionScale, record.Emission[0], record.Emission[1], record.Emission[2] });
+    emission = emission || record.Emission[0] > 0.0 || record.Emission[1] > 0.0 ||
+      record.Emission[2] > 0.0;
   }
-  // Emission is stored relative to the scene's brightest emitter.
-  full = full || emissionScale != this->BuiltEmissionScale;
-  const bool emission = emissionScale > 0.0;
   const bool settingsChanged = !this->Voxelized || !this->BuiltGrid.IsValid() ||
     this->BuiltGrid.Resolution != settings.VoxelResolution ||
     this->BuiltPadding != settings.GridPadding ||
-    emission != (this->BuiltEmissionScale > 0.0) ||
+    emission != this->BuiltEmission ||
     settings.HardwareConservativeRaster != this->BuiltHardware;
   // The scene left the grid or shrank to under half of it.
   const double extent =
@@ -495,7 +492,6 @@ bool SceneScan::Scan(
   }
   update.Run = true;
   update.Emission = emission;
-  update.EmissionScale = emissionScale;
   this->Pending = std::move(records);
   return true;
 }
@@ -507,7 +503,7 @@ void SceneScan::Accept(const VoxelUpdate& update, const Settings& settings)
   this->Pending.clear();
   this->BuiltGrid = update.Grid;
   this->BuiltPadding = settings.GridPadding;
-  this->BuiltEmissionScale = update.EmissionScale;
+  this->BuiltEmission = update.Emission;
   this->BuiltHardware = settings.HardwareConservativeRaster;
   this->Voxelized = true;
 }

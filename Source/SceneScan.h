@@ -65,7 +65,6 @@ struct VoxelUpdate
   bool Run = false;     // rebuild any voxels at all
   bool Full = false;    // all of them (else the dynamic actors only)
   bool Emission = false; // the scene has emissive props
-  double EmissionScale = 0.0; // brightest emission: voxels store emission relative to it
   VoxelGrid Grid;       // the grid to voxelize into
 };
 
@@ -136,7 +135,7 @@ private:
   bool Voxelized = false;
   VoxelGrid BuiltGrid;
   double BuiltPadding = -1.0;
-  double BuiltEmissionScale = 0.0;
+  bool BuiltEmission = false;
   bool BuiltHardware = false;
   bool InvalidateRequested = false;
   int FramesSinceUpdate = 0;

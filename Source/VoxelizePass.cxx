@@ -159,7 +159,6 @@ void VoxelizePass::ListEveryBrick()
 void VoxelizePass::Run(const Frame& frame)
 {
   const bool full = frame.Voxels.Full;
-  this->EmissionScale = frame.Voxels.EmissionScale;
   this->Clear(frame);
 
   std::vector<vtkProp*> staticProps;
@@ -301,10 +300,6 @@ void VoxelizePass::Resolve(const Frame& frame)
     this->EmissionVolume.BindImage(3, GL_WRITE_ONLY);
   }
   this->ResolveProgram.Use(frame.Window);
-  if (this->Emission)
-  {
-    this->ResolveProgram.SetFloat("emissionScale", static_cast<float>(this->EmissionScale));
-  }
   this->ResolveProgram.DispatchCube(this->Resolution, VOXELGI_LOCAL_SIZE);
   Barrier();
 }
@@ -350,11 +345,11 @@ bool VoxelizePass::SetShaderParameters(
 {
   float e[3] = { 0.f, 0.f, 0.f };
   auto found = this->PropEmissions.find(prop);
-  if (found != this->PropEmissions.end() && this->EmissionScale > 0.0)
+  if (found != this->PropEmissions.end())
   {
     for (int c = 0; c < 3; ++c)
     {
-      e[c] = static_cast<float>(found->second[c] / this->EmissionScale);
+      e[c] = static_cast<float>(found->second[c]);
     }
   }
   program->SetUniformi("voxelStaticPass", this->StaticPass ? 1 : 0);

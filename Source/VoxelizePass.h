@@ -102,7 +102,6 @@ private:
   bool Emission = false;
   bool HardwareConservative = false;
   bool StaticPass = false;
-  double EmissionScale = 0.0;
   std::unordered_map<vtkProp*, std::array<double, 3>> PropEmissions;
   std::array<StorageBuffer, VOXELGI_BASE_CHANNELS + VOXELGI_EMISSION_CHANNELS> Accumulators;
   StorageBuffer BrickList;

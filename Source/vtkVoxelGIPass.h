@@ -114,8 +114,8 @@ public:
   ///@{
   /**
    * Voxels per axis of the voxel grid: a power of two in [16, 512] (other values are
-   * rounded to the nearest one). Memory grows with its cube: about 60 bytes per voxel, 80
-   * in scenes with emissive props (128: 120 / 160 MiB, 256: 959 / 1279 MiB; see
+   * rounded to the nearest one). Memory grows with its cube: about 60 bytes per voxel, 84
+   * in scenes with emissive props (128: 120 / 168 MiB, 256: 959 / 1343 MiB; see
    * GetRequiredVoxelMemoryBytes()). Default: 128.
    */
   virtual void SetVoxelResolution(int resolution);

@@ -8,8 +8,9 @@
 //
 //   VoxelGIErrorStudy [--egl] SCENE REFERENCE.pfm OUT.csv [frames]
 //
-// SCENE: cornell, glossy, isosurface or glyphs (vtkVoxelGIScenes::AddScene). --egl renders
-// headless through EGL (vtkVoxelGIEGLRenderWindow), as on a GPU machine without X.
+// SCENE: cornell, glossy, isosurface, glyphs, emissive or streamlines
+// (vtkVoxelGIScenes::AddScene). --egl renders headless through EGL
+// (vtkVoxelGIEGLRenderWindow), as on a GPU machine without X.
 #include "ImageMetrics.h"
 #include "vtkVoxelGIEGLRenderWindow.h"
 #include "vtkVoxelGIPass.h"

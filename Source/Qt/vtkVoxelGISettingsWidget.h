@@ -15,6 +15,8 @@
 #define vtkVoxelGISettingsWidget_h
 
 #include "VoxelGIQtExport.h"
+#include "vtkRenderWindow.h" // for vtkWeakPointer<vtkRenderWindow>
+#include "vtkWeakPointer.h"  // for the observed window
 
 #include <QMap>
 #include <QStringList>
@@ -22,7 +24,6 @@
 
 class QLabel;
 class vtkCallbackCommand;
-class vtkRenderWindow;
 class vtkVoxelGIPass;
 
 class VOXELGIQT_EXPORT vtkVoxelGISettingsWidget : public QWidget
@@ -60,7 +61,8 @@ private:
   void apply(const QString& name, double value);
 
   vtkVoxelGIPass* Pass = nullptr;
-  vtkRenderWindow* Window = nullptr;
+  // Observed, not owned: the viewer may delete its window before this widget.
+  vtkWeakPointer<vtkRenderWindow> Window;
   vtkCallbackCommand* PassObserver = nullptr;
   vtkCallbackCommand* WindowObserver = nullptr;
   unsigned long PassTag = 0;

@@ -635,6 +635,46 @@ const std::map<std::string, std::function<int()>>& Cases()
         VOXELGI_CHECK(s.GI->GetGIActive() && Bounded(s.GI), "GI did not come back");
         return EXIT_SUCCESS;
       } },
+    { "EmittersOfVeryDifferentRadiance",
+      [] {
+        // Radiance 1000 and 0.5 side by side. Quantized relative to the brightest emitter in
+        // 8 bits (before), the dim one emitted nothing; each voxel now keeps its radiance.
+        Scene s;
+        vtkActor* bright = voxelgi_test::AddQuad(
+          s.Renderer, dvec3(0, 0, 0), dvec3(1, 0, 0), dvec3(0, 0, 1), 1.0, 1.0, 1.0);
+        vtkActor* dim = voxelgi_test::AddQuad(
+          s.Renderer, dvec3(3, 0, 0), dvec3(4, 0, 0), dvec3(3, 0, 1), 1.0, 1.0, 1.0);
+        vtkVoxelGIPass::SetPropEmission(bright, 1000.0, 1000.0, 1000.0);
+        vtkVoxelGIPass::SetPropEmission(dim, 0.5, 0.25, 0.125);
+        s.Render();
+        VOXELGI_CHECK(s.GI->GetGIActive(), "GI did not run: " << s.Log.Text);
+        vtkNew<vtkImageData> emission;
+        VOXELGI_CHECK(
+          s.GI->GetVoxelVolume(vtkVoxelGIPass::VOLUME_EMISSION, emission), "no emission volume");
+        double origin[3];
+        s.GI->GetGridOrigin(origin);
+        const double size = s.GI->GetGridVoxelSize();
+        const int n = s.GI->GetGridResolution();
+        vtkDataArray* e = emission->GetPointData()->GetScalars();
+        double brightest[3] = { 0, 0, 0 }, dimmest[3] = { 0, 0, 0 };
+        for (vtkIdType i = 0; i < e->GetNumberOfTuples(); ++i)
+        {
+          const double x = origin[0] + (static_cast<double>(i % n) + 0.5) * size;
+          double* side = x < 2.0 ? brightest : dimmest;
+          for (int c = 0; c < 3; ++c)
+          {
+            side[c] = std::max(side[c], e->GetComponent(i, c));
+          }
+        }
+        std::cout << "largest voxel emission: bright (" << brightest[0] << ", " << brightest[1]
+                  << ", " << brightest[2] << "), dim (" << dimmest[0] << ", " << dimmest[1]
+                  << ", " << dimmest[2] << ")" << std::endl;
+        VOXELGI_CHECK(brightest[0] == 1000.0 && brightest[2] == 1000.0, "bright emitter changed");
+        VOXELGI_CHECK(dimmest[0] == 0.5 && dimmest[1] == 0.25 && dimmest[2] == 0.125,
+          "dim emitter's radiance not kept");
+        VOXELGI_CHECK(Bounded(s.GI), "non-finite values");
+        return EXIT_SUCCESS;
+      } },
     { "ScreenSpaceAOCombined",
       [] {
         // vtkSSAOPass as the pass's delegate, and the pass as vtkSSAOPass's delegate: both

@@ -3,6 +3,14 @@
 #include "vtkVoxelGIPass.h"
 
 #include "vtkActor.h"
+#include "vtkAssignAttribute.h"
+#include "vtkDataArray.h"
+#include "vtkDataSetAttributes.h"
+#include "vtkImageData.h"
+#include "vtkLineSource.h"
+#include "vtkStreamTracer.h"
+#include "vtkTriangleFilter.h"
+#include "vtkTubeFilter.h"
 #include "vtkCamera.h"
 #include "vtkContourFilter.h"
 #include "vtkCubeSource.h"
@@ -277,6 +285,109 @@ void vtkVoxelGIScenes::AddGlyphField(vtkRenderer* renderer)
   AimCamera(renderer, { 15.0, 13.0, 23.0 }, { 0.0, 0.5, 0.0 });
 }
 
+void vtkVoxelGIScenes::AddEmissiveBox(vtkRenderer* renderer)
+{
+  if (!renderer)
+  {
+    return;
+  }
+  // Closed: the room's five faces and a front wall behind the camera. No vtkLight at all (and
+  // no headlight): the ceiling panel's emission is the only light.
+  const double S = 5.0;
+  const Vec3 white{ { 0.75, 0.75, 0.75 } };
+  AddRoom(renderer, { 0, 0, 0 }, { S, S, S }, white, white, { 0.75, 0.7, 0.2 },
+    { 0.2, 0.3, 0.75 });
+  AddQuad(renderer, { 0, 0, S }, { 0, S, S }, { S, 0, S }, white);
+  const double a = 0.5 * S - 1.0, b = 0.5 * S + 1.0, y = S - 0.01;
+  MakeEmitter(AddQuad(renderer, { a, y, a }, { b, y, a }, { a, y, b }, { 1.0, 1.0, 1.0 }),
+    { 10.0, 10.0, 10.0 });
+  AddBlock(renderer, 3.5, 1.6, 1.3, 1.6, 1.3, 20.0, white);
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetCenter(1.5, 0.8, 1.9);
+  sphere->SetRadius(0.8);
+  sphere->SetThetaResolution(40);
+  sphere->SetPhiResolution(24);
+  AddSource(renderer, sphere, 0.75, 0.75, 0.75);
+  renderer->AutomaticLightCreationOff();
+  AimCamera(renderer, { 0.5 * S, 0.6 * S, 0.97 * S }, { 0.5 * S, 0.28 * S, 0.0 });
+  renderer->GetActiveCamera()->SetViewAngle(60.0);
+  renderer->ResetCameraClippingRange();
+}
+
+void vtkVoxelGIScenes::AddStreamlines(vtkRenderer* renderer)
+{
+  if (!renderer)
+  {
+    return;
+  }
+  // A vortex about the vertical axis that rises and is pulled inward: (-z, 0.4, x) - 0.15 (x,
+  // 0, z), sampled on a 25^3 grid over [-6, 6]^3.
+  const int n = 25;
+  const double h = 12.0 / (n - 1);
+  vtkNew<vtkImageData> field;
+  field->SetDimensions(n, n, n);
+  field->SetOrigin(-6.0, -6.0, -6.0);
+  field->SetSpacing(h, h, h);
+  vtkNew<vtkDoubleArray> velocity;
+  velocity->SetName("velocity");
+  velocity->SetNumberOfComponents(3);
+  velocity->SetNumberOfTuples(static_cast<vtkIdType>(n) * n * n);
+  for (int k = 0; k < n; ++k)
+  {
+    for (int j = 0; j < n; ++j)
+    {
+      for (int i = 0; i < n; ++i)
+      {
+        const double x = -6.0 + h * i, z = -6.0 + h * k;
+        velocity->SetTuple3(i + n * (j + n * k), -z - 0.15 * x, 0.4, x - 0.15 * z);
+      }
+    }
+  }
+  field->GetPointData()->SetVectors(velocity);
+  vtkNew<vtkLineSource> seeds;
+  seeds->SetPoint1(1.5, -5.5, 0.0);
+  seeds->SetPoint2(5.5, -5.5, 0.0);
+  seeds->SetResolution(9);
+  vtkNew<vtkStreamTracer> tracer;
+  tracer->SetInputData(field);
+  tracer->SetSourceConnection(seeds->GetOutputPort());
+  tracer->SetIntegrationDirectionToForward();
+  tracer->SetMaximumPropagation(60.0);
+  tracer->SetInitialIntegrationStep(0.2);
+  vtkNew<vtkTubeFilter> tubes;
+  tubes->SetInputConnection(tracer->GetOutputPort());
+  tubes->SetRadius(0.15);
+  tubes->SetNumberOfSides(12);
+  tubes->CappingOn();
+  // Triangles instead of the tubes' strips: the scene description (OBJ) keeps only polygons.
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputConnection(tubes->GetOutputPort());
+  vtkNew<vtkAssignAttribute> time;
+  time->SetInputConnection(triangles->GetOutputPort());
+  time->Assign("IntegrationTime", vtkDataSetAttributes::SCALARS, vtkAssignAttribute::POINT_DATA);
+  time->Update();
+  vtkNew<vtkLookupTable> lut;
+  lut->SetHueRange(0.6, 0.0);
+  lut->SetTableRange(
+    vtkPolyData::SafeDownCast(time->GetOutput())->GetPointData()->GetScalars()->GetRange());
+  vtkActor* actor = AddSource(renderer, time, 1.0, 1.0, 1.0);
+  vtkPolyDataMapper* mapper = vtkPolyDataMapper::SafeDownCast(actor->GetMapper());
+  mapper->SetLookupTable(lut);
+  mapper->UseLookupTableScalarRangeOn();
+  mapper->ScalarVisibilityOn();
+
+  AddQuad(renderer, { -9, -6.2, -9 }, { -9, -6.2, 9 }, { 9, -6.2, -9 }, { 0.7, 0.7, 0.7 });
+  vtkNew<vtkLight> sun;
+  sun->SetLightTypeToSceneLight();
+  sun->SetPositional(false);
+  sun->SetPosition(-4.0, 10.0, 6.0);
+  sun->SetFocalPoint(0.0, 0.0, 0.0);
+  sun->SetIntensity(0.8);
+  renderer->AddLight(sun);
+  AddPointLight(renderer, { 0.0, 3.0, 0.0 }, { 1.0, 0.9, 0.8 }, 0.4);
+  AimCamera(renderer, { 14.0, 9.0, 26.0 }, { 0.0, -1.0, 0.0 });
+}
+
 bool vtkVoxelGIScenes::AddScene(vtkRenderer* renderer, const char* name)
 {
   if (!renderer || !name)
@@ -298,6 +409,14 @@ bool vtkVoxelGIScenes::AddScene(vtkRenderer* renderer, const char* name)
   else if (!std::strcmp(name, "glyphs"))
   {
     AddGlyphField(renderer);
+  }
+  else if (!std::strcmp(name, "emissive"))
+  {
+    AddEmissiveBox(renderer);
+  }
+  else if (!std::strcmp(name, "streamlines"))
+  {
+    AddStreamlines(renderer);
   }
   else
   {

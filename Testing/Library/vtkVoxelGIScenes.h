@@ -10,7 +10,10 @@
  * The other scenes are those of the error study against a path-traced reference:
  * AddGlossyRoom() (emissive quads, a glossy floor), AddIsosurfaceRoom() (an isosurface of
  * VTK's wavelet coloured by height, in a room) and AddGlyphField() (boxes glyphed on a ground
- * plane, a directional sun and a uniform sky that the ambient term stands for).
+ * plane, a directional sun and a uniform sky that the ambient term stands for),
+ * AddEmissiveBox() (a closed box lit only by an emissive ceiling panel, seen from inside, no
+ * vtkLight) and AddStreamlines() (stream tubes of a vortex coloured by integration time
+ * through a lookup table, over a floor, under a sun and a point light).
  * Emitters are drawn by VTK at their emitted radiance (their ambient colour).
  *
  * @sa vtkVoxelGIPass
@@ -41,10 +44,12 @@ public:
   static void AddGlossyRoom(vtkRenderer* renderer);
   static void AddIsosurfaceRoom(vtkRenderer* renderer);
   static void AddGlyphField(vtkRenderer* renderer);
+  static void AddEmissiveBox(vtkRenderer* renderer);
+  static void AddStreamlines(vtkRenderer* renderer);
 
   /**
-   * Add the scene called `name`: "cornell", "glossy", "isosurface" or "glyphs". Returns false
-   * (and adds nothing) for another name.
+   * Add the scene called `name`: "cornell", "glossy", "isosurface", "glyphs", "emissive" or
+   * "streamlines". Returns false (and adds nothing) for another name.
    */
   static bool AddScene(vtkRenderer* renderer, const char* name);
 

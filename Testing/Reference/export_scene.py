@@ -5,7 +5,7 @@ and per material the diffuse, specular and emission terms of VTK's model, image 
 
     python3 export_scene.py SCENE OUT_PREFIX     (build/lib/python3/dist-packages on PYTHONPATH)
 
-SCENE: cornell, glossy, isosurface or glyphs. Stops with a message when the scene uses VTK
+SCENE: cornell, glossy, isosurface, glyphs, emissive or streamlines. Stops with a message when the scene uses VTK
 features that have no counterpart in the description (attenuated or spot lights, headlights,
 an ambient term that is not the background's sky light).
 """
