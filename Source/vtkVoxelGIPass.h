@@ -196,7 +196,9 @@ public:
   ///@{
   /**
    * Bounces of indirect diffuse light between voxels, in [0, 10]. Each one cone-traces every
-   * voxel and rebuilds the mipmaps. Default: 1.
+   * occupied voxel and rebuilds the mipmaps, in frames whose voxels or lights changed (camera
+   * frames reuse the result). Default: 4 (closed rooms need several: the error study's FLIP
+   * falls from 0.36 at one bounce to 0.26 at four in the Cornell box).
    */
   vtkSetClampMacro(Bounces, int, 0, 10);
   vtkGetMacro(Bounces, int);

@@ -41,12 +41,12 @@ struct Bounds
 const std::map<std::string, Bounds>& SceneBounds()
 {
   static const std::map<std::string, Bounds> bounds = {
-    { "cornell", { 0.30, 0.38, 1.0, 0.20, 0.50 } },
-    { "glossy", { 0.30, 0.37, 1.0, 0.18, 0.50 } },
-    { "isosurface", { 0.30, 0.49, 1.0, 0.30, 0.56 } },
-    { "glyphs", { 0.12, 0.17, 1.0, 0.10, 0.70 } },
-    { "emissive", { 0.30, 0.65, 1.45, 0.52, 1.35 } },
-    { "streamlines", { 0.12, 0.18, 1.0, 0.33, 0.65 } },
+    { "cornell", { 0.30, 0.30, 1.0, 0.13, 0.50 } },
+    { "glossy", { 0.30, 0.33, 1.0, 0.14, 0.50 } },
+    { "isosurface", { 0.30, 0.41, 1.0, 0.18, 0.50 } },
+    { "glyphs", { 0.12, 0.175, 1.0, 0.10, 0.63 } },
+    { "emissive", { 0.30, 0.52, 1.12, 0.36, 1.05 } },
+    { "streamlines", { 0.12, 0.19, 1.0, 0.36, 0.69 } },
   };
   return bounds;
 }

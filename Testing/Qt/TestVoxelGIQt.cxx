@@ -120,7 +120,7 @@ private Q_SLOTS:
       QCOMPARE(vtkVoxelGISettings::GetValue(pass, vtkVoxelGISettings::GetName(i)),
         vtkVoxelGISettings::GetDefault(i));
     }
-    QCOMPARE(qobject_cast<QSpinBox*>(panel.control("Bounces"))->value(), 1);
+    QCOMPARE(qobject_cast<QSpinBox*>(panel.control("Bounces"))->value(), 4);
   }
 
   void viewerRenderAreaMatchesBaseline()
