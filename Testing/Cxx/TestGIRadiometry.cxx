@@ -6,6 +6,8 @@
 //                 (1 - rho) -> E / (1 - rho); never above the limit, never darker with more
 //                 bounces. AO off (AO multiplies VTK's direct term: a separate defect).
 //  FurnaceDefaults the same at the default settings (AO on).
+//  FurnaceAlbedoOne walls of albedo 1: the series E (B + 2) grows without limit; every pixel
+//                 stays finite, at most E (B + 2), and grows with the bounces (no blow-up).
 //  AreaLight      one emissive square (radiance L, albedo 0) over a white plane (albedo rho):
 //                 the plane's radiance is rho L F, F the point-to-parallel-rectangle form
 //                 factor (closed form).
@@ -554,6 +556,42 @@ int ContactCase(double rhoBlock, const char* name)
 }
 
 //------------------------------------------------------------------------------
+// Furnace of albedo 1: nothing is absorbed, so each bounce adds E at most.
+int FurnaceAlbedoOneCase()
+{
+  const double E = 0.5;
+  const int size = 64;
+  View view(size, 32);
+  view.Renderer->AutomaticLightCreationOff();
+  for (vtkActor* wall : voxelgi_test::AddClosedBox(view.Renderer, 4.0, 1.0))
+  {
+    MakeEmitter(wall, E, true);
+  }
+  view.Aim(dvec3(2.0, 2.0, 3.5), dvec3(2.0, 2.0, 0.0), 60.0);
+  double previousMean = 0.0;
+  for (int bounces : { 0, 1, 4, 10 })
+  {
+    view.GI->SetBounces(bounces);
+    vtkNew<vtkFloatArray> composite;
+    VOXELGI_CHECK(view.Render(composite, nullptr), "GI did not run");
+    Stats all;
+    for (vtkIdType i = 0; i < static_cast<vtkIdType>(size) * size; ++i)
+    {
+      all.Add(composite->GetComponent(i, 0));
+    }
+    const double series = E * (bounces + 2);
+    std::cout << "furnace of albedo 1, " << bounces << " bounces: pixels min " << all.Min
+              << " mean " << all.Mean() << " max " << all.Max << " (series " << series << ")"
+              << std::endl;
+    // half floats round to 1/1024 relative
+    VOXELGI_CHECK(all.Max <= series * 1.002, "brighter than the series: energy created");
+    VOXELGI_CHECK(all.Mean() > previousMean, "more bounces did not add light");
+    previousMean = all.Mean();
+  }
+  return EXIT_SUCCESS;
+}
+
+//------------------------------------------------------------------------------
 // Thin wall: the dark room [0, 4]^3 and the bright room [4, 8] x [0, 4]^2 share the wall x = 4.
 int ThinWallCase()
 {
@@ -673,6 +711,7 @@ int TestGIRadiometry(int argc, char* argv[])
   const Case cases[] = {
     { "Furnace", [] { return FurnaceCase(false); } },
     { "FurnaceDefaults", [] { return FurnaceCase(true); } },
+    { "FurnaceAlbedoOne", FurnaceAlbedoOneCase },
     { "AreaLight", AreaLightCase },
     { "LitByFloor", LitByFloorCase },
     { "ContactBlack", [] { return ContactCase(0.0, "ContactBlack"); } },
