@@ -193,9 +193,7 @@ bool GBufferPass::SetShaderParameters(
   if (polyData)
   {
     // An emitter's ambient colour is its emission, which nothing occludes.
-    const std::array<double, 3> emission = PropEmission(prop);
-    program->SetUniformf("voxelgiOccludable",
-      emission[0] > 0.0 || emission[1] > 0.0 || emission[2] > 0.0 ? 0.0f : 1.0f);
+    program->SetUniformf("voxelgiOccludable", Emits(PropEmission(prop)) ? 0.0f : 1.0f);
   }
   // Before every draw: VTK's state handling may have re-enabled blending for all buffers.
   DisableDataBlending();

@@ -76,6 +76,11 @@ std::array<double, 3> PropEmission(vtkProp* prop)
   return e;
 }
 
+bool Emits(const std::array<double, 3>& emission)
+{
+  return emission[0] > 0.0 || emission[1] > 0.0 || emission[2] > 0.0;
+}
+
 namespace
 {
 bool PropUserDynamic(vtkProp* prop)
@@ -458,8 +463,7 @@ bool SceneScan::Scan(
   bool emission = false;
   for (const ActorRecord& record : records)
   {
-    emission = emission || record.Emission[0] > 0.0 || record.Emission[1] > 0.0 ||
-      record.Emission[2] > 0.0;
+    emission = emission || Emits(record.Emission);
   }
   const bool settingsChanged = !this->Voxelized || !this->BuiltGrid.IsValid() ||
     this->BuiltGrid.Resolution != settings.VoxelResolution ||

@@ -41,6 +41,9 @@ bool SetEmissionKey(vtkProp* prop, const double rgb[3]);
 /// A prop's emission key (vtkVoxelGIPass::EMISSION()), non-finite or negative values as 0.
 std::array<double, 3> PropEmission(vtkProp* prop);
 
+/// Whether an emission (as PropEmission returns it) emits anything.
+bool Emits(const std::array<double, 3>& emission);
+
 /// What the scan remembers of a voxelized actor between frames.
 struct ActorRecord
 {

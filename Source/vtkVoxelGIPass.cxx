@@ -18,6 +18,7 @@
 #include "VoxelizePass.h"
 #include "vtkVoxelGISettings.h"
 
+#include "vtkCameraPass.h"
 #include "vtkCommand.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
@@ -27,10 +28,9 @@
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkRenderState.h"
-#include "vtkCameraPass.h"
-#include "vtkSSAOPass.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkRenderer.h"
+#include "vtkSSAOPass.h"
 #include "vtkWeakPointer.h"
 #include "vtk_glew.h"
 
@@ -270,13 +270,25 @@ unsigned long long vtkVoxelGIPass::GetAllocatedBytes(int resource) const
   }
 }
 
+namespace
+{
+/// What the voxel volumes of `settings` need, per stage.
+struct VoxelMemory
+{
+  std::size_t Voxelization, Radiance, Mipmaps;
+  VoxelMemory(bool emission, const voxelgi::Settings& settings)
+    : Voxelization(voxelgi::VoxelizePass::RequiredBytes(settings.VoxelResolution, emission))
+    , Radiance(voxelgi::LightVoxels::RequiredBytes(settings.VoxelResolution, settings))
+    , Mipmaps(voxelgi::VoxelMipmap::RequiredBytes(settings.VoxelResolution, settings))
+  {
+  }
+  std::size_t Total() const { return this->Voxelization + this->Radiance + this->Mipmaps; }
+};
+}
+
 unsigned long long vtkVoxelGIPass::GetRequiredVoxelMemoryBytes(bool emission)
 {
-  const voxelgi::Settings settings = voxelgi::Snapshot(this, false);
-  const int resolution = settings.VoxelResolution;
-  return voxelgi::VoxelizePass::RequiredBytes(resolution, emission) +
-    voxelgi::LightVoxels::RequiredBytes(resolution, settings) +
-    voxelgi::VoxelMipmap::RequiredBytes(resolution, settings);
+  return VoxelMemory(emission, voxelgi::Snapshot(this, false)).Total();
 }
 
 unsigned long long vtkVoxelGIPass::GetVoxelMemoryBytes() const
@@ -347,10 +359,11 @@ bool vtkVoxelGIPass::ViewportFits()
 }
 
 //------------------------------------------------------------------------------
-bool vtkVoxelGIPass::MemoryFits(int resolution, bool emission)
+bool vtkVoxelGIPass::MemoryFits(bool emission)
 {
   Internals& in = *this->Internal;
-  const std::size_t need = this->GetRequiredVoxelMemoryBytes(emission);
+  const VoxelMemory memory(emission, in.Frame.Config);
+  const std::size_t need = memory.Total();
   if (need == in.FittingBytes)
   {
     return true;
@@ -362,14 +375,12 @@ bool vtkVoxelGIPass::MemoryFits(int resolution, bool emission)
   if (available >= 0 && need > static_cast<unsigned long long>(available) + held)
   {
     const auto mib = [](unsigned long long bytes) { return bytes / (1024 * 1024); };
-    const voxelgi::Settings settings = voxelgi::Snapshot(this, false);
     std::ostringstream msg;
-    msg << "VoxelResolution " << resolution << " needs " << mib(need)
-        << " MiB for its voxel volumes (voxelization "
-        << mib(voxelgi::VoxelizePass::RequiredBytes(resolution, emission)) << ", radiance "
-        << mib(voxelgi::LightVoxels::RequiredBytes(resolution, settings)) << ", mipmaps "
-        << mib(voxelgi::VoxelMipmap::RequiredBytes(resolution, settings)) << " MiB) but only "
-        << mib(available + held) << " MiB are free (" << source << ")";
+    msg << "VoxelResolution " << in.Frame.Config.VoxelResolution << " needs " << mib(need)
+        << " MiB for its voxel volumes (voxelization " << mib(memory.Voxelization)
+        << ", radiance " << mib(memory.Radiance) << ", mipmaps " << mib(memory.Mipmaps)
+        << " MiB) but only " << mib(available + held) << " MiB are free (" << source
+        << "; a lower VoxelResolution needs an eighth per halving)";
     this->Refuse(msg.str());
     return false;
   }
@@ -383,10 +394,7 @@ void vtkVoxelGIPass::Refuse(const std::string& error)
   if (!in.HasRefused || !(in.RefusedConfiguration == in.Current))
   {
     vtkErrorMacro(<< "Voxel GI disabled: " << error
-                  << ". Rendering without GI until a setting changes"
-                  << (error.find("VoxelResolution") != std::string::npos
-                         ? " (a lower VoxelResolution needs an eighth per halving)."
-                         : "."));
+                  << ". Rendering without GI until a setting changes.");
   }
   in.HasRefused = true;
   in.RefusedConfiguration = in.Current;
@@ -589,7 +597,7 @@ bool vtkVoxelGIPass::UpdateVoxels(bool& changed)
     return true;
   }
   std::string error;
-  if (!this->MemoryFits(frame.Voxels.Grid.Resolution, emission))
+  if (!this->MemoryFits(emission))
   {
     return false;
   }

@@ -557,9 +557,9 @@ protected:
   bool ServeRenderer(vtkRenderer* renderer);
   /// False, with one error, where the render passes around or below this one cannot hold GI.
   bool PassesCombine(vtkRenderer* renderer);
-  /// Whether the voxel volumes of `resolution` fit the memory the GL reports free (counting
-  /// what the pass holds now); refuses the configuration if not.
-  bool MemoryFits(int resolution, bool emission);
+  /// Whether the frame's voxel volumes fit the memory the GL reports free (counting what the
+  /// pass holds now); refuses the configuration if not.
+  bool MemoryFits(bool emission);
   /// A stage could not be prepared: say why once, free every GL resource of the stages and
   /// render VTK's image until a setting, the scene's emission or the viewport changes.
   void Refuse(const std::string& error);

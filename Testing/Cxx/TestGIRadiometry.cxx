@@ -57,22 +57,10 @@
 namespace
 {
 using glm::dvec3;
+using voxelgi_test::Within;
 constexpr double Pi = 3.14159265358979323846;
 
 std::string OutputDirectory = ".";
-
-// An error against its physical goal and the bound asserted today (see above).
-bool Within(const std::string& what, double error, double goal, double asserted)
-{
-  std::cout << what << ": " << error << (error <= goal ? " (goal " : " (GOAL NOT MET: goal ")
-            << goal << ", asserted " << asserted << ")" << std::endl;
-  if (error > asserted)
-  {
-    std::cerr << "FAILED: " << what << " " << error << " above " << asserted << std::endl;
-    return false;
-  }
-  return true;
-}
 
 // The composited float image as an 8-bit PNG (clamped), for the person reading the log.
 void SavePng(vtkFloatArray* rgba, int w, int h, const std::string& name)

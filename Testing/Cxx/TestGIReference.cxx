@@ -27,6 +27,7 @@
 
 namespace
 {
+using voxelgi_test::Within;
 struct Bounds
 {
   double FlipGoal;  // FLIP goal of the scene
@@ -73,19 +74,6 @@ Score Measure(vtkFloatArray* rgba, const voxelgi::metrics::Image& reference, con
             << ", SSIM " << s.Errors.Ssim << ", FLIP " << s.Errors.Flip << ", mean radiance "
             << s.Mean << "\n";
   return s;
-}
-
-// Prints a value against its goal; false when it exceeds what is asserted today.
-bool Within(const std::string& what, double value, double goal, double asserted)
-{
-  std::cout << what << ": " << value << (value <= goal ? " (goal " : " (GOAL NOT MET: goal ")
-            << goal << ", asserted " << asserted << ")" << std::endl;
-  if (value > asserted)
-  {
-    std::cerr << "FAILED: " << what << " " << value << " above " << asserted << std::endl;
-    return false;
-  }
-  return true;
 }
 }
 

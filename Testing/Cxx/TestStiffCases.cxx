@@ -59,6 +59,7 @@
 namespace
 {
 using glm::dvec3;
+using voxelgi_test::Bounded;
 
 // Collects the pass's warnings and errors (observed, so VTK does not print them).
 struct Messages
@@ -168,28 +169,6 @@ vtkActor* AddBox(vtkRenderer* renderer, double x0, double x1, double y0, double 
   // Double precision points: in float, a unit box 1e8 from the origin collapses to a point.
   cube->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
   return vtkVoxelGIScenes::AddSource(renderer, cube, 0.8, 0.7, 0.6);
-}
-
-// Radiance volume and composite finite and in [0, 65504]; prints and fails otherwise.
-bool Bounded(vtkVoxelGIPass* gi)
-{
-  if (!voxelgi_test::AllFinite(gi))
-  {
-    return false;
-  }
-  vtkNew<vtkFloatArray> image;
-  if (gi->GetFloatImage(vtkVoxelGIPass::IMAGE_COMPOSITE, image))
-  {
-    for (vtkIdType i = 0; i < image->GetNumberOfValues(); ++i)
-    {
-      if (image->GetValue(i) < 0.0f || image->GetValue(i) > 65504.0f)
-      {
-        std::cerr << "composite value " << image->GetValue(i) << " out of [0, 65504]" << std::endl;
-        return false;
-      }
-    }
-  }
-  return true;
 }
 
 // Occupied voxels (albedo alpha) of the last voxelization.

@@ -146,6 +146,39 @@ int ImageMatches(int argc, char* argv[], vtkRenderWindow* window)
   return EXIT_SUCCESS;
 }
 
+bool Bounded(vtkVoxelGIPass* gi)
+{
+  if (!AllFinite(gi))
+  {
+    return false;
+  }
+  vtkNew<vtkFloatArray> image;
+  if (gi->GetFloatImage(vtkVoxelGIPass::IMAGE_COMPOSITE, image))
+  {
+    for (vtkIdType i = 0; i < image->GetNumberOfValues(); ++i)
+    {
+      if (image->GetValue(i) < 0.0f || image->GetValue(i) > 65504.0f)
+      {
+        std::cerr << "composite value " << image->GetValue(i) << " out of [0, 65504]" << std::endl;
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+bool Within(const std::string& what, double value, double goal, double asserted)
+{
+  std::cout << what << ": " << value << (value <= goal ? " (goal " : " (GOAL NOT MET: goal ")
+            << goal << ", asserted " << asserted << ")" << std::endl;
+  if (value > asserted)
+  {
+    std::cerr << "FAILED: " << what << " " << value << " above " << asserted << std::endl;
+    return false;
+  }
+  return true;
+}
+
 bool AllFinite(vtkVoxelGIPass* gi)
 {
   vtkNew<vtkImageData> radiance;

@@ -5,6 +5,7 @@
 #include <glm/glm.hpp>
 
 #include <iostream>
+#include <string>
 #include <vector>
 
 class vtkActor;
@@ -34,6 +35,13 @@ int ImageMatches(int argc, char* argv[], vtkRenderWindow* window);
 /// True when the radiance volume and the composited float image hold only finite values
 /// (prints what is not).
 bool AllFinite(vtkVoxelGIPass* gi);
+
+/// AllFinite, and the composite within [0, 65504] (prints what is not).
+bool Bounded(vtkVoxelGIPass* gi);
+
+/// Prints `value` against its goal, as met or "GOAL NOT MET", with the bound asserted today;
+/// false (printed) when it exceeds that bound.
+bool Within(const std::string& what, double value, double goal, double asserted);
 
 /// Mean of component `c` of an RGBA float image of width `w` over pixels [x0, x1) x [y0, y1).
 double MeanOver(vtkFloatArray* image, int w, int x0, int y0, int x1, int y1, int c);
