@@ -1,4 +1,5 @@
-// Error against run time: renders one of vtkVoxelGIScenes' scenes with baselines (plain VTK,
+// Error against run time: renders one of vtkVoxelGIScenes' scenes, or a scene description
+// written by vtkVoxelGISceneFile from any program's renderer, with baselines (plain VTK,
 // VTK's SSAO, the pass with GI off) and with the pass at its defaults and with one setting
 // varied at a time, and writes, per configuration, the median frame time (full update every
 // frame: voxelize, light, mip, trace), the median camera-only frame time (only tracing and
@@ -9,11 +10,13 @@
 //   VoxelGIErrorStudy [--egl] SCENE REFERENCE.pfm OUT.csv [frames]
 //
 // SCENE: cornell, glossy, isosurface, glyphs, emissive or streamlines
-// (vtkVoxelGIScenes::AddScene). --egl renders headless through EGL
+// (vtkVoxelGIScenes::AddScene), or a description FILE.json (Testing/Reference/study_scene.sh
+// renders its reference and runs this). --egl renders headless through EGL
 // (vtkVoxelGIEGLRenderWindow), as on a GPU machine without X.
 #include "ImageMetrics.h"
 #include "vtkVoxelGIEGLRenderWindow.h"
 #include "vtkVoxelGIPass.h"
+#include "vtkVoxelGISceneFile.h"
 #include "vtkVoxelGIScenes.h"
 #include "vtkVoxelGISettings.h"
 
@@ -75,9 +78,16 @@ int main(int argc, char* argv[])
     return EXIT_FAILURE;
   }
   const std::string& scene = args[0];
+  const bool file = scene.size() > 5 && scene.compare(scene.size() - 5, 5, ".json") == 0;
+  auto addScene = [&scene, file](vtkRenderer* renderer) {
+    vtkNew<vtkVoxelGISceneFile> description;
+    description->SetFileName(scene.c_str());
+    return file ? description->Read(renderer)
+                : vtkVoxelGIScenes::AddScene(renderer, scene.c_str());
+  };
   {
     vtkNew<vtkRenderer> probe;
-    if (!vtkVoxelGIScenes::AddScene(probe, scene.c_str()))
+    if (!addScene(probe))
     {
       std::cerr << "unknown scene " << scene << "\n";
       return EXIT_FAILURE;
@@ -118,7 +128,7 @@ int main(int argc, char* argv[])
   for (const Config& config : configs)
   {
     vtkNew<vtkRenderer> renderer;
-    vtkVoxelGIScenes::AddScene(renderer, scene.c_str());
+    addScene(renderer);
     vtkSmartPointer<vtkRenderWindow> window = egl
       ? vtkSmartPointer<vtkRenderWindow>(vtkSmartPointer<vtkVoxelGIEGLRenderWindow>::New())
       : vtkSmartPointer<vtkRenderWindow>::New();

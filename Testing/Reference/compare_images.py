@@ -1,10 +1,10 @@
 """Side-by-side figure of the path-traced references and the study's images: per scene, the
 Cycles reference, plain VTK, VTK's SSAO, the pass at its defaults, and |defaults - reference|.
 
-    python3 compare_images.py OUT.png STUDY_PREFIX SCENE...
+    python3 compare_images.py OUT.png STUDY_PREFIX SCENE... [--references DIR]
 
-reads Testing/Data/Reference/SCENE.pfm and STUDY_PREFIX-SCENE-{plain,ssao,defaults}.pfm (written
-by VoxelGIErrorStudy). All images are linear radiance shown clamped to [0, 1] and sRGB-encoded,
+reads DIR/SCENE.pfm (default Testing/Data/Reference) and
+STUDY_PREFIX-SCENE-{plain,ssao,defaults}.pfm (written by VoxelGIErrorStudy). All images are linear radiance shown clamped to [0, 1] and sRGB-encoded,
 the way the references' PNG previews are.
 """
 import os
@@ -18,8 +18,13 @@ from float_images import read_pfm, srgb_encode
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-out, prefix, scenes = sys.argv[1], sys.argv[2], sys.argv[3:]
+args = sys.argv[1:]
 references = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Data", "Reference")
+if "--references" in args:
+    at = args.index("--references")
+    references = args[at + 1]
+    del args[at:at + 2]
+out, prefix, scenes = args[0], args[1], args[2:]
 
 
 def pfm(path):

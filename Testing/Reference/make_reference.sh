@@ -1,9 +1,6 @@
 #!/bin/bash
 # Exports one built-in scene and renders its path-traced reference with Blender Cycles:
 #   Testing/Data/Scenes/SCENE.{obj,mtl,json}, Testing/Data/Reference/SCENE.{pfm,png,txt}.
-# The .txt file records the sample count, the render time and the remaining noise, estimated
-# from two independent renders of a quarter of the samples (RMSE between them / sqrt(2) is the
-# noise of one; a four times larger sample count halves it).
 #
 #   Testing/Reference/make_reference.sh SCENE [SAMPLES]     (from the source tree, after .ci/setup)
 set -euo pipefail
@@ -11,34 +8,6 @@ scene=$1
 samples=${2:-4096}
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
-scenes=$root/Testing/Data/Scenes
-refs=$root/Testing/Data/Reference
 PYTHONPATH=$root/build/lib/python3/dist-packages xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" /usr/bin/python3 \
-  "$here/export_scene.py" "$scene" "$scenes/$scene"
-
-render() { # prefix samples seed
-  blender -b -P "$here/render_cycles.py" -- "$scenes/$scene.json" "$1" "$2" "$3" > /dev/null
-}
-start=$(date +%s)
-render "$refs/$scene" "$samples" 1
-seconds=$(( $(date +%s) - start ))
-noise=$(mktemp -d)
-trap 'rm -rf "$noise"' EXIT
-render "$noise/a" $((samples / 4)) 2
-render "$noise/b" $((samples / 4)) 3
-PYTHONPATH=$here /usr/bin/python3 - "$noise/a.pfm" "$noise/b.pfm" "$refs/$scene.pfm" "$samples" "$seconds" \
-  > "$refs/$scene.txt" <<'EOF'
-import sys
-import numpy as np
-from float_images import read_pfm
-
-a, b, ref = (read_pfm(p) for p in sys.argv[1:4])
-samples, seconds = sys.argv[4:6]
-quarter = np.sqrt(np.mean((a - b) ** 2)) / np.sqrt(2.0)
-print("samples per pixel: %s" % samples)
-print("render time: %s s (Blender Cycles, CPU)" % seconds)
-print("mean pixel value: %.4f" % ref.mean())
-print("noise, RMSE: %.4f (two renders of %d samples differ by %.4f)"
-      % (quarter / 2.0, int(samples) // 4, quarter * np.sqrt(2.0)))
-EOF
-cat "$refs/$scene.txt"
+  "$here/export_scene.py" "$scene" "$root/Testing/Data/Scenes/$scene"
+"$here/render_reference.sh" "$root/Testing/Data/Scenes/$scene.json" "$root/Testing/Data/Reference/$scene" "$samples"

@@ -1,0 +1,93 @@
+/**
+ * @class   vtkVoxelGISceneFile
+ * @brief   Writes a renderer's scene as a description that VTK and Blender Cycles both read,
+ *          and reads it back into a renderer.
+ *
+ * The error study compares the pass with a path-traced reference; this class lets it do so for
+ * any scene a program builds, not only vtkVoxelGIScenes'. Write() turns the renderer's visible
+ * actors, lights and camera into FILE.json (camera, lights, background, image size and, per
+ * actor, VTK's material and the terms Cycles renders: diffuse, specular, emission) and FILE.obj
+ * + FILE.mtl (world-space polygons, normals and scalar colours as vertex colours, one material
+ * per actor). Testing/Reference/render_cycles.py renders the description with Cycles; Read()
+ * rebuilds the same actors, lights and camera in a renderer, as VoxelGIErrorStudy does for a
+ * scene file.
+ *
+ * Only what has the same meaning in both renderers is written. Write() refuses a scene that
+ * uses anything else and names every such use in GetProblems(): translucent, textured, PBR,
+ * unlit, wireframe or point props, lines and vertices, cell or field scalar colours, glyph and
+ * composite mappers, volumes, image slices and other 3D props, spot lights, attenuated lights,
+ * image-based lighting, gradient or textured backgrounds, parallel projection, and ambient
+ * terms other than the background's sky light (Ka Ca = background x diffuse colour). Camera
+ * lights and headlights are written as the scene lights they are for the current camera, and
+ * overlays (2D actors) are left out; GetNotes() says so.
+ *
+ * @sa vtkVoxelGIScenes vtkVoxelGIPass
+ */
+#ifndef vtkVoxelGISceneFile_h
+#define vtkVoxelGISceneFile_h
+
+#include "vtkObject.h"
+#include "vtkTestingVoxelGIModule.h" // for export macro
+
+#include <string> // for the problems and notes
+
+class vtkRenderer;
+
+class VTKTESTINGVOXELGI_EXPORT vtkVoxelGISceneFile : public vtkObject
+{
+public:
+  static vtkVoxelGISceneFile* New();
+  vtkTypeMacro(vtkVoxelGISceneFile, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * The description's JSON file; the OBJ and MTL files lie beside it with the same stem.
+   */
+  vtkSetStringMacro(FileName);
+  vtkGetStringMacro(FileName);
+
+  /**
+   * Image size written into the description (the reference is rendered at it). 0 (default)
+   * takes the renderer's size in pixels, or 200 x 200 when it has no window.
+   */
+  vtkSetVector2Macro(Size, int);
+  vtkGetVector2Macro(Size, int);
+
+  /**
+   * Write `renderer`'s scene. Returns false, writes nothing and reports one error listing
+   * every problem when the scene cannot be described.
+   */
+  bool Write(vtkRenderer* renderer);
+
+  /**
+   * Add the described actors and lights to `renderer`, set its camera and background, and
+   * set Size to the description's image size. Returns false (with an error) when the files
+   * cannot be read.
+   */
+  bool Read(vtkRenderer* renderer);
+
+  /**
+   * What the last Write() could not describe, one per line (empty when it succeeded).
+   */
+  const char* GetProblems() { return this->Problems.c_str(); }
+
+  /**
+   * What the last Write() changed or left out on purpose, one per line.
+   */
+  const char* GetNotes() { return this->Notes.c_str(); }
+
+protected:
+  vtkVoxelGISceneFile() = default;
+  ~vtkVoxelGISceneFile() override;
+
+private:
+  vtkVoxelGISceneFile(const vtkVoxelGISceneFile&) = delete;
+  void operator=(const vtkVoxelGISceneFile&) = delete;
+
+  char* FileName = nullptr;
+  int Size[2] = { 0, 0 };
+  std::string Problems;
+  std::string Notes;
+};
+
+#endif
