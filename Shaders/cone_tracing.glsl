@@ -56,10 +56,17 @@ vec4 voxelConeTrace(vec3 origin, vec3 dir, float tanHalf, float start, float max
   // Where the cone leaves the grid its last sample is taken, half a voxel inside: a step
   // must not jump over the geometry between the last sample and the grid's boundary (in a
   // closed room the walls lie there, and the cone would end short of full opacity: light
-  // lost). The step count is bounded whatever the settings: no endless loops.
+  // lost). That sample stands for everything up to the boundary, so it is read along the
+  // axis the cone leaves through, whose directional mip holds the share of the footprint
+  // blocked before that face (read obliquely, the other axes' mips see only part of a
+  // one-voxel wall), and takes no step-length correction. Near an edge of the grid the axes
+  // whose faces lie within one footprint of the exit share the read, so that neighbouring
+  // cones leaving through different faces do not jump from one wall's colour to the
+  // other's. The step count is bounded whatever the settings: no endless loops.
   vec3 safeDir = mix(dir, vec3(1e-6), lessThan(abs(dir), vec3(1e-6)));
   vec3 exits = max(-origin / safeDir, (vec3(res) - origin) / safeDir);
-  float tEnd = min(maxDistance, min(exits.x, min(exits.y, exits.z)));
+  float tExit = min(exits.x, min(exits.y, exits.z));
+  float tEnd = min(maxDistance, tExit);
   bool last = false;
   for (int i = 0; i < 512 && !last && acc.a < 0.99; ++i)
   {
@@ -96,9 +103,15 @@ vec4 voxelConeTrace(vec3 origin, vec3 dir, float tanHalf, float start, float max
       diameter = min(diameter, exp2(floor(log2((height - 1.0) / 1.5))));
     }
     diameter = max(diameter, 1.0);
-    vec4 s = voxelSampleCone(p, diameter, dir);
+    vec3 readDir = dir;
+    if (last)
+    {
+      vec3 near = max(1.0 - (exits - tExit) / diameter, 0.0);
+      readDir = sqrt(near / (near.x + near.y + near.z)) * sign(safeDir);
+    }
+    vec4 s = voxelSampleCone(p, diameter, readDir);
     // Opacity correction for steps shorter or longer than the sample's extent.
-    float a = 1.0 - pow(clamp(1.0 - s.a, 0.0, 1.0), stepFactor);
+    float a = last ? clamp(s.a, 0.0, 1.0) : 1.0 - pow(clamp(1.0 - s.a, 0.0, 1.0), stepFactor);
     vec3 c = s.a > 1e-4 ? s.rgb * (a / s.a) : vec3(0.0);
     acc.rgb += (1.0 - acc.a) * c;
     acc.a += (1.0 - acc.a) * a;

@@ -243,7 +243,7 @@ public:
   ///@{
   /**
    * Longest cone, as a fraction of the voxel grid's size, in [0, 2]. 0 traces nothing.
-   * Default: 1.
+   * Default: 1.75, across the grid's diagonal, so that no cone stops inside a closed room.
    */
   vtkVoxelGISetClampMacro(MaxTraceDistance, double, 0.0, 2.0);
   vtkGetMacro(MaxTraceDistance, double);

@@ -123,8 +123,9 @@ int Furnace()
     }
     if (bounces == 10)
     {
-      // Cones through one-voxel-thick walls leak a little at the box's edges and corners.
-      VOXELGI_CHECK(mean > 0.85 * limit, "bounces do not approach the furnace value");
+      // measured: 0.998 of the limit (0.91 while a cone's last sample read the walls
+      // obliquely and each bounce lost a tenth of the light)
+      VOXELGI_CHECK(mean > 0.98 * limit, "bounces do not approach the furnace value");
     }
     previousMean = mean;
   }
