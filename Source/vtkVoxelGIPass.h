@@ -217,7 +217,7 @@ public:
   ///@{
   /**
    * Diffuse cones per pixel (and per voxel for bounces), in [1, 16], spread with a cosine
-   * distribution over the normal's hemisphere. Default: 6.
+   * distribution over the normal's hemisphere. Default: 16.
    */
   vtkSetClampMacro(DiffuseConeCount, int, 1, 16);
   vtkGetMacro(DiffuseConeCount, int);

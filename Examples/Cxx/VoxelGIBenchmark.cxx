@@ -3,7 +3,7 @@
 //   VoxelGIBenchmark [--scene cornell|field|atrium|sphere] [--objects N] [--triangles N]
 //                    [--size WxH] [--resolution R] [--frames F] [--warmup W] [--trace-scale S]
 //                    [--multisamples N] [--egl] [--temporal-reuse 0|1] [--bounces N]
-//                    [--update-interval N]
+//                    [--update-interval N] [--set SETTING=VALUE ...]
 //                    [--sequences NAME,NAME,...] [--csv FILE] [--json FILE] [--image FILE]
 //
 // Scenes: the Cornell box (36 triangles), a field of N spheres and boxes on a ground plane
@@ -14,11 +14,13 @@
 // VTK alone, static); --sequences runs some of them. Per frame: the wall time of Render()
 // with glFinish, its CPU time (Render() returning, without glFinish), the GPU time span of
 // the frame (two timestamp queries) and per-stage GPU times (timer queries) go to the CSV;
-// the JSON and the printed table hold medians per sequence. Each sequence runs twice: with
+// the JSON and the printed table hold medians per sequence. --set sets any setting of the
+// settings table (vtkVoxelGISettings), e.g. --set DiffuseConeCount=16; the JSON lists them. Each sequence runs twice: with
 // the stage timers for the stage times, then without them for the frame, CPU and span.
 #include "vtkVoxelGIEGLRenderWindow.h"
 #include "vtkVoxelGIPass.h"
 #include "vtkVoxelGIScenes.h"
+#include "vtkVoxelGISettings.h"
 
 #include "vtkActor.h"
 #include "vtkActorCollection.h"
@@ -80,6 +82,7 @@ struct Options
   std::string CSV = "voxelgi-benchmark.csv";
   std::string JSON = "voxelgi-benchmark.json";
   std::string Image; // PNG of the first GI frame, if given
+  std::vector<std::pair<std::string, double>> Settings; // --set NAME=VALUE
 };
 
 // N spheres and boxes on a ground plane under a directional light (an open scene with AO).
@@ -295,6 +298,13 @@ bool Parse(int argc, char* argv[], Options& o)
     else if (arg == "--multisamples") o.MultiSamples = std::atoi(next().c_str());
     else if (arg == "--csv") o.CSV = next();
     else if (arg == "--json") o.JSON = next();
+    else if (arg == "--set")
+    {
+      const std::string setting = next();
+      const size_t eq = setting.find('=');
+      o.Settings.emplace_back(setting.substr(0, eq),
+        eq == std::string::npos ? 0.0 : std::atof(setting.c_str() + eq + 1));
+    }
     else if (arg == "--image") o.Image = next();
     else
     {
@@ -381,6 +391,14 @@ int main(int argc, char* argv[])
   if (o.Bounces >= 0)
   {
     gi->SetBounces(o.Bounces);
+  }
+  for (const auto& setting : o.Settings)
+  {
+    if (!vtkVoxelGISettings::SetValue(gi, setting.first.c_str(), setting.second))
+    {
+      std::cerr << "unknown setting " << setting.first << "\n";
+      return EXIT_FAILURE;
+    }
   }
   if (o.UpdateInterval > 0)
   {
@@ -521,8 +539,12 @@ int main(int argc, char* argv[])
        << ", \"trace_scale\": " << o.TraceScale << ", \"temporal_reuse\": " << o.TemporalReuse
        << ", \"multisamples\": " << window->GetMultiSamples() << ", \"bounces\": "
        << gi->GetBounces() << ", \"update_interval\": " << o.UpdateInterval
-       << ", \"frames\": " << o.Frames
-       << ",\n  \"renderer\": \"" << RendererName(window) << "\",\n  \"median_ms\": {\n";
+       << ", \"frames\": " << o.Frames << ", \"settings\": {";
+  for (size_t i = 0; i < o.Settings.size(); ++i)
+  {
+    json << (i ? ", " : "") << "\"" << o.Settings[i].first << "\": " << o.Settings[i].second;
+  }
+  json << "},\n  \"renderer\": \"" << RendererName(window) << "\",\n  \"median_ms\": {\n";
   std::cout << std::fixed << std::setprecision(2) << "\nmedian ms on " << RendererName(window)
             << ", " << o.Scene << " (" << actors.size() << " actors, " << triangles
             << " triangles) " << o.Width << "x" << o.Height << ", " << o.Resolution

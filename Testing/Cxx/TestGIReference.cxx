@@ -44,9 +44,9 @@ const std::map<std::string, Bounds>& SceneBounds()
   static const std::map<std::string, Bounds> bounds = {
     { "cornell", { 0.30, 0.30, 1.0, 0.10, 0.50 } },
     { "glossy", { 0.30, 0.30, 1.0, 0.10, 0.50 } },
-    { "isosurface", { 0.30, 0.36, 1.0, 0.10, 0.50 } },
-    { "glyphs", { 0.12, 0.175, 1.0, 0.10, 0.63 } },
-    { "emissive", { 0.30, 0.45, 1.0, 0.16, 0.92 } },
+    { "isosurface", { 0.30, 0.35, 1.0, 0.10, 0.50 } },
+    { "glyphs", { 0.12, 0.165, 1.0, 0.10, 0.60 } },
+    { "emissive", { 0.30, 0.30, 1.0, 0.10, 0.50 } },
     { "streamlines", { 0.12, 0.19, 1.0, 0.36, 0.69 } },
   };
   return bounds;
