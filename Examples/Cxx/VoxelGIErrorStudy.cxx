@@ -104,7 +104,7 @@ int main(int argc, char* argv[])
   std::vector<Config> configs = { { "plain", "", 0 }, { "ssao", "", 0 }, { "gi-off", "", 0 },
     { "defaults", "", 0 } };
   const std::vector<std::pair<std::string, std::vector<double>>> sweep = {
-    { "VoxelResolution", { 32, 64, 256 } }, { "DiffuseConeCount", { 1, 3, 9, 16 } },
+    { "VoxelResolution", { 32, 64, 256 } }, { "DiffuseConeCount", { 1, 3, 6, 9 } },
     { "DiffuseConeAperture", { 30, 45, 90 } }, { "ConeStepFactor", { 0.35, 0.5, 1.0, 1.5 } },
     { "Bounces", { 0, 1, 2, 6 } }, { "TraceResolution", { 0.5, 0.25 } }, { "TemporalReuse", { 0 } },
     { "AnisotropicMipmaps", { 0 } }, { "AmbientOcclusionStrength", { 0, 0.5 } },
