@@ -19,6 +19,7 @@
 #include "vtkMapper.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
+#include "vtkGlyph3DMapper.h"
 #include "vtkOpenGLPolyDataMapper.h"
 #include "vtkPlane.h"
 #include "vtkPlaneCollection.h"
@@ -142,7 +143,8 @@ std::string LeftOutReason(vtkProp* prop)
       (prop->IsA("vtkVolume") ? " (a volume)" : " (not an actor)");
   }
   vtkMapper* mapper = actor->GetMapper();
-  if (!vtkOpenGLPolyDataMapper::SafeDownCast(mapper))
+  // Glyph mappers draw every instance through a polydata helper: voxelized like polygons.
+  if (!vtkOpenGLPolyDataMapper::SafeDownCast(mapper) && !vtkGlyph3DMapper::SafeDownCast(mapper))
   {
     return std::string(prop->GetClassName()) + " with a " +
       (mapper ? mapper->GetClassName() : "null mapper") + " (not a polydata mapper)";
