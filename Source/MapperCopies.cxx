@@ -4,6 +4,8 @@
 
 #include "vtkActor.h"
 #include "vtkCompositePolyDataMapper2.h"
+#include "vtkGlyph3DMapper.h"
+#include "vtkInformation.h"
 #include "vtkMapper.h"
 #include "vtkOpenGLPolyDataMapper.h"
 #include "vtkProperty.h"
@@ -14,6 +16,41 @@
 
 namespace voxelgi
 {
+
+namespace
+{
+// vtkGlyph3DMapper has no ShallowCopy of its own: the colouring settings come from vtkMapper's,
+// the rest (points, glyph sources, arrays, scaling and orientation) is copied here.
+void CopyGlyphMapper(vtkGlyph3DMapper* source, vtkGlyph3DMapper* copy)
+{
+  copy->vtkMapper::ShallowCopy(source);
+  copy->SetInputConnection(0, source->GetInputConnection(0, 0));
+  copy->RemoveAllInputConnections(1);
+  for (int i = 0; i < source->GetNumberOfInputConnections(1); ++i)
+  {
+    copy->AddInputConnection(1, source->GetInputConnection(1, i));
+  }
+  for (int i = 0; i < 5; ++i) // scale, source index, mask, orientation, selection id arrays
+  {
+    if (vtkInformation* array = source->GetInputArrayInformation(i))
+    {
+      copy->GetInputArrayInformation(i)->Copy(array);
+    }
+  }
+  copy->SetScaling(source->GetScaling());
+  copy->SetScaleMode(source->GetScaleMode());
+  copy->SetScaleFactor(source->GetScaleFactor());
+  copy->SetRange(source->GetRange());
+  copy->SetOrient(source->GetOrient());
+  copy->SetOrientationMode(source->GetOrientationMode());
+  copy->SetClamping(source->GetClamping());
+  copy->SetSourceIndexing(source->GetSourceIndexing());
+  copy->SetUseSourceTableTree(source->GetUseSourceTableTree());
+  copy->SetMasking(source->GetMasking());
+  copy->SetBlockAttributes(source->GetBlockAttributes());
+  copy->SetCullingAndLOD(false); // every instance, whatever the camera
+}
+}
 
 MapperCopies::~MapperCopies() = default;
 
@@ -40,7 +77,13 @@ vtkMapper* MapperCopies::CopyOf(vtkActor* actor)
     // deprecated shader code, which warns; the actor's shader property still applies.)
     auto* glSource = vtkOpenGLPolyDataMapper::SafeDownCast(source);
     auto* glCopy = vtkOpenGLPolyDataMapper::SafeDownCast(mapper);
-    if (glSource && glCopy)
+    auto* glyphSource = vtkGlyph3DMapper::SafeDownCast(source);
+    auto* glyphCopy = vtkGlyph3DMapper::SafeDownCast(mapper);
+    if (glyphSource && glyphCopy)
+    {
+      CopyGlyphMapper(glyphSource, glyphCopy);
+    }
+    else if (glSource && glCopy)
     {
       glCopy->vtkPolyDataMapper::ShallowCopy(glSource);
       // Same shift and scale: the 1e8-offset cases stay exact, and the points VBO is shared.

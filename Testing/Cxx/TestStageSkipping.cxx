@@ -250,9 +250,11 @@ int TestStageSkipping(int, char*[])
         image->Modified();
       },
       Full, 5e-4 },
-    // Same bounds, so the grid stays. Afterwards the image stays within 0.0026 of a fresh
-    // pass's (a stale glyph would differ by its whole light): not explained yet.
-    { "glyph source changed", [&] { glyphSource->SetXLength(0.2); }, Full, 3e-3 },
+    // Same bounds, so the grid stays. The changed glyph actor turns dynamic, and where its
+    // voxels meet static ones their albedo differs from a fresh pass's (which has it static):
+    // the image within 0.0033 (a stale glyph would differ by its whole light). Polydata
+    // actors turned dynamic keep the same albedo; not explained yet.
+    { "glyph source changed", [&] { glyphSource->SetXLength(0.2); }, Full, 4e-3 },
   };
   for (const Case& c : cases)
   {
