@@ -80,10 +80,13 @@ int main(int argc, char* argv[])
   const std::string& scene = args[0];
   const bool file = scene.size() > 5 && scene.compare(scene.size() - 5, 5, ".json") == 0;
   auto addScene = [&scene, file](vtkRenderer* renderer) {
+    if (!file)
+    {
+      return vtkVoxelGIScenes::AddScene(renderer, scene.c_str());
+    }
     vtkNew<vtkVoxelGISceneFile> description;
     description->SetFileName(scene.c_str());
-    return file ? description->Read(renderer)
-                : vtkVoxelGIScenes::AddScene(renderer, scene.c_str());
+    return description->Read(renderer);
   };
   {
     vtkNew<vtkRenderer> probe;

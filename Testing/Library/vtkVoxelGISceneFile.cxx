@@ -108,14 +108,14 @@ const char* const ColorsName = "vtkVoxelGISceneFile colors";
 vtkSmartPointer<vtkPolyData> Polygons(vtkActor* actor, std::string& problem)
 {
   vtkMapper* mapper = actor->GetMapper();
-  mapper->Update(); // the scene as the next render would draw it
-  vtkDataObject* input = mapper->GetInputDataObject(0, 0);
   if (!vtkPolyDataMapper::SafeDownCast(mapper) && !mapper->IsA("vtkDataSetMapper"))
   {
     problem = std::string("mapper ") + mapper->GetClassName() +
       " (only polygonal and dataset mappers are described; vtkGlyph3D makes glyph surfaces)";
     return nullptr;
   }
+  mapper->Update(); // the scene as the next render would draw it
+  vtkDataObject* input = mapper->GetInputDataObject(0, 0);
   if (vtkCompositeDataSet::SafeDownCast(input) || !vtkDataSet::SafeDownCast(input))
   {
     problem = "composite or non-dataset input (merge the blocks, e.g. vtkAppendPolyData)";
@@ -170,8 +170,7 @@ vtkSmartPointer<vtkPolyData> Polygons(vtkActor* actor, std::string& problem)
   }
   world->SetTransform(transform);
   world->Update();
-  vtkSmartPointer<vtkPolyData> result = world->GetOutput();
-  return result;
+  return world->GetOutput();
 }
 
 // Why VTK's material of `actor` has no counterpart in Cycles, or empty.
