@@ -16,9 +16,11 @@ uniform sampler2DArrayShadow shadowMaps;
 uniform int shadowLayers[VOXELGI_MAX_LIGHTS];
 uniform mat4 shadowMatrices[VOXELGI_MAX_LIGHTS]; // grid -> the light's clip space
 #endif
-layout(rgba16f, binding = 0) uniform writeonly image3D radianceOut;
-layout(rgba16f, binding = 1) uniform writeonly image3D directOut;
+// Read too with keepIndirect (each invocation its own voxel, read before written).
+layout(rgba16f, binding = 0) uniform image3D radianceOut;
+layout(rgba16f, binding = 1) uniform image3D directOut;
 uniform int writeDirect;
+uniform int keepIndirect;
 
 
 // Transmittance from p toward the light: products of (1 - occupancy) along the ray.
@@ -108,7 +110,13 @@ void main()
     }
     result = vec4(min(radiance, vec3(VOXELGI_HALF_MAX)), 1.0);
   }
-  imageStore(radianceOut, v, result);
+  vec4 total = result;
+  if (keepIndirect != 0 && albedo.a > 0.0)
+  {
+    vec3 indirect = max(imageLoad(radianceOut, v).rgb - imageLoad(directOut, v).rgb, vec3(0.0));
+    total.rgb = min(result.rgb + indirect, vec3(VOXELGI_HALF_MAX));
+  }
+  imageStore(radianceOut, v, total);
   if (writeDirect != 0)
   {
     imageStore(directOut, v, result);

@@ -17,6 +17,7 @@ Settings Snapshot(vtkVoxelGIPass* pass, bool hasConservativeRaster)
   c.LightOcclusion = pass->GetLightOcclusion();
   c.ShadowMapResolution = pass->GetShadowMapResolution();
   c.Bounces = pass->GetBounces();
+  c.CameraLightTurn = pass->GetCameraLightTurn();
   c.AnisotropicMipmaps = pass->GetAnisotropicMipmaps() != 0;
   c.DiffuseConeCount = pass->GetDiffuseConeCount();
   c.DiffuseConeAperture = pass->GetDiffuseConeAperture();

@@ -36,6 +36,7 @@ struct Settings
   int LightOcclusion = 0;
   int ShadowMapResolution = 0;
   int Bounces = 0;
+  double CameraLightTurn = 0.0;
   bool AnisotropicMipmaps = true;
   int DiffuseConeCount = 1;
   double DiffuseConeAperture = 0.0;

@@ -192,8 +192,14 @@ bool GBufferPass::SetShaderParameters(
   this->Framebuffer->ActivateDrawBuffers(polyData ? 4 : 1);
   if (polyData)
   {
-    // An emitter's ambient colour is its emission, which nothing occludes.
-    program->SetUniformf("voxelgiOccludable", Emits(PropEmission(prop)) ? 0.0f : 1.0f);
+    // An emitter's ambient colour is its emission, which nothing occludes. A surface VTK
+    // does not light (no diffuse or specular term, or lighting off: an image slice's quad,
+    // a flat-coloured actor) shows its colour as VTK does.
+    vtkActor* actor = vtkActor::SafeDownCast(prop);
+    vtkProperty* property = actor ? actor->GetProperty() : nullptr;
+    const bool unlit = property &&
+      (!property->GetLighting() || (property->GetDiffuse() == 0.0 && property->GetSpecular() == 0.0));
+    program->SetUniformf("voxelgiOccludable", unlit || Emits(PropEmission(prop)) ? 0.0f : 1.0f);
   }
   // Before every draw: VTK's state handling may have re-enabled blending for all buffers.
   DisableDataBlending();

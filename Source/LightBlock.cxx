@@ -7,8 +7,10 @@
 #include "vtkMath.h"
 #include "vtkRenderer.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <set>
 
 namespace voxelgi
@@ -67,6 +69,22 @@ std::string InvalidPart(vtkLight* light)
   }
   return std::string();
 }
+
+// Angle between two vectors (first three components), degrees; 0 when either is zero.
+double AngleBetween(const float* a, const float* b, float centre)
+{
+  double u[3], v[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    u[i] = a[i] - centre;
+    v[i] = b[i] - centre;
+  }
+  if (vtkMath::Normalize(u) == 0.0 || vtkMath::Normalize(v) == 0.0)
+  {
+    return 0.0;
+  }
+  return vtkMath::DegreesFromRadians(vtkMath::AngleBetweenVectors(u, v));
+}
 }
 
 void LightBlock::Pack(vtkLight* light, const VoxelGrid& grid, Light& l)
@@ -113,6 +131,8 @@ bool LightBlock::Gather(
   Block block{};
   int count = 0;
   this->Used.clear();
+  this->Follows.fill(false);
+  this->Centre = 0.5f * static_cast<float>(grid.Resolution);
   vtkLightCollection* lights = renderer->GetLights();
   vtkCollectionSimpleIterator it;
   lights->InitTraversal(it);
@@ -135,6 +155,7 @@ bool LightBlock::Gather(
       continue;
     }
     this->Used.push_back(light);
+    this->Follows[count] = !light->LightTypeIsSceneLight();
     Pack(light, grid, block.Lights[count++]);
   }
   block.Info[0] = count;
@@ -178,10 +199,48 @@ void LightBlock::Bind()
   this->Buffer.BindUniform(VOXELGI_LIGHT_BLOCK_BINDING);
 }
 
+void LightBlock::MarkLit()
+{
+  this->Lit = this->Data;
+  this->LitFollows = this->Follows;
+  this->HaveLit = true;
+}
+
+double LightBlock::CameraTurnSinceLit() const
+{
+  constexpr double never = std::numeric_limits<double>::infinity();
+  if (!this->HaveLit || this->Follows != this->LitFollows)
+  {
+    return never;
+  }
+  // The current lights with the lit ones' places for those that follow the camera: equal to
+  // the lit lights when nothing but those places changed.
+  Block placed = this->Data;
+  double turn = 0.0;
+  for (int l = 0; l < this->Count; ++l)
+  {
+    if (!this->Follows[l])
+    {
+      continue;
+    }
+    const Light& now = this->Data.Lights[l];
+    const Light& then = this->Lit.Lights[l];
+    turn = std::max(turn, AngleBetween(now.Direction, then.Direction, 0.0f));
+    if (now.Position[3] != 0.0f)
+    {
+      turn = std::max(turn, AngleBetween(now.Position, then.Position, this->Centre));
+    }
+    std::copy(then.Position, then.Position + 3, placed.Lights[l].Position);
+    std::copy(then.Direction, then.Direction + 3, placed.Lights[l].Direction);
+  }
+  return std::memcmp(&placed, &this->Lit, sizeof(Block)) == 0 ? turn : never;
+}
+
 void LightBlock::ReleaseGraphicsResources(vtkWindow*)
 {
   this->Buffer.Release();
   this->HaveUploaded = false;
+  this->HaveLit = false;
 }
 
 }

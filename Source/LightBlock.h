@@ -33,6 +33,13 @@ public:
   bool Gather(vtkRenderer* renderer, const VoxelGrid& grid, std::vector<std::string>& warnings);
   /// Upload (when changed) and bind.
   void Bind();
+  /// Remember the gathered lights as those the voxels are now lit with.
+  void MarkLit();
+  /// How far, in degrees, the camera-following lights (headlights and camera lights) turned
+  /// since MarkLit(): the largest angle between a light's directions (for a positional one,
+  /// also between its directions from the grid's centre). Infinite when anything else of the
+  /// lights changed, or none were lit.
+  double CameraTurnSinceLit() const;
   int GetCount() const { return this->Count; }
   /// The gathered lights, in block order.
   const std::vector<vtkLight*>& GetLights() const { return this->Used; }
@@ -57,6 +64,12 @@ private:
   Block Data{};
   Block Uploaded{};
   bool HaveUploaded = false;
+  /// Which entries follow the camera; the lights the voxels were lit with.
+  std::array<bool, MaxLights> Follows{};
+  Block Lit{};
+  std::array<bool, MaxLights> LitFollows{};
+  bool HaveLit = false;
+  float Centre = 0.0f; // of the grid, in voxels on every axis
   int Count = 0;
   bool WarnedDropped = false;
   bool WarnedInvalid = false;

@@ -64,7 +64,7 @@ bool LightVoxels::Prepare(const Frame& frame, std::string& error)
   return true;
 }
 
-void LightVoxels::Run(const Frame& frame)
+void LightVoxels::Run(const Frame& frame, bool keepIndirect)
 {
   ScopedStage stage(*frame.Clock, vtkVoxelGIPass::STAGE_LIGHT);
   const VoxelizePass& voxels = this->Voxels;
@@ -91,10 +91,13 @@ void LightVoxels::Run(const Frame& frame)
     return;
   }
   const bool direct = this->Direct.IsAllocated();
+  const bool keep = keepIndirect && direct;
   p.SetInt("writeDirect", direct ? 1 : 0);
-  this->Radiance.BindImage(0, GL_WRITE_ONLY);
+  p.SetInt("keepIndirect", keep ? 1 : 0);
+  const GLenum access = keep ? GL_READ_WRITE : GL_WRITE_ONLY;
+  this->Radiance.BindImage(0, access);
   // Without a direct volume the second image unit still needs a matching format behind it.
-  (direct ? this->Direct : this->Radiance).BindImage(1, GL_WRITE_ONLY);
+  (direct ? this->Direct : this->Radiance).BindImage(1, access);
   // The whole grid: empty voxels get zero (a clear of the volumes first, glClearTexImage,
   // cost twenty times this dispatch on the H200), and the bounce then writes only the
   // occupied bricks.

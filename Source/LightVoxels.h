@@ -37,7 +37,9 @@ public:
   /// The bytes Prepare allocates for a grid of `resolution` with `settings`.
   static std::size_t RequiredBytes(int resolution, const Settings& settings);
   /// Direct light and emission into the radiance (and direct) volume.
-  void Run(const Frame& frame);
+  /// `keepIndirect`: add the indirect light of the last bounces (radiance minus direct, both
+  /// as they were) to the new direct light, so that one bounce can continue from it.
+  void Run(const Frame& frame, bool keepIndirect = false);
   /// Whether the radiance (after Mipmap and Bounce) was computed with the frame's voxels,
   /// lights and settings: `changed` tells whether voxels or lights changed since.
   bool IsCurrent(const Frame& frame, bool changed) const;

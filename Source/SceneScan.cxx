@@ -38,6 +38,7 @@
 #include <cmath>
 #include <sstream>
 #include <map>
+#include <set>
 #include <unordered_map>
 
 namespace voxelgi
@@ -136,6 +137,10 @@ std::string NonFinitePoints(vtkActor* actor)
 /// Why a visible prop with bounds is not voxelized (empty: it is): its class, and the reason.
 std::string LeftOutReason(vtkProp* prop)
 {
+  if (auto* slice = vtkImageSlice::SafeDownCast(prop))
+  {
+    return ImageSliceProxies::LeftOutReason(slice);
+  }
   vtkActor* actor = vtkActor::SafeDownCast(prop);
   if (!actor)
   {
@@ -301,6 +306,7 @@ bool SceneScan::Collect(vtkRenderer* renderer, std::vector<ActorRecord>& records
   }
   vtkMath::UninitializeBounds(bounds);
   std::map<std::string, int> leftOut; // visible 3D props VTK renders without GI, by reason
+  std::set<vtkProp*> slices;          // image slices voxelized through proxies
   bool anySpecular = false;
   vtkPropCollection* props = renderer->GetViewProps();
   this->PropSignatures.clear();
@@ -335,7 +341,19 @@ bool SceneScan::Collect(vtkRenderer* renderer, std::vector<ActorRecord>& records
                             "out of the voxel grid.");
       continue;
     }
-    vtkActor* actor = static_cast<vtkActor*>(prop);
+    // An image slice is voxelized through its proxy: a textured quad.
+    vtkActor* actor = vtkActor::SafeDownCast(prop);
+    if (auto* slice = vtkImageSlice::SafeDownCast(prop))
+    {
+      std::string why;
+      actor = this->Slices.Update(slice, why);
+      slices.insert(slice);
+      if (!actor)
+      {
+        ++leftOut[why];
+        continue;
+      }
+    }
     ActorRecord record;
     record.Actor = actor;
     record.Signature = signature;
@@ -349,13 +367,15 @@ bool SceneScan::Collect(vtkRenderer* renderer, std::vector<ActorRecord>& records
         warnings.push_back(bad);
       }
     }
-    record.Emission = PropEmission(actor);
-    record.UserDynamic = PropUserDynamic(actor);
+    // The user's keys are on the prop (a slice's, not its proxy's).
+    record.Emission = PropEmission(prop);
+    record.UserDynamic = PropUserDynamic(prop);
     record.Dynamic = record.UserDynamic || (found != previous.end() && found->second->Dynamic);
     Merge(bounds, b, records.empty());
     anySpecular = anySpecular || actor->GetProperty()->GetSpecular() > 0.0;
     records.push_back(record);
   }
+  this->Slices.Retain(slices);
   this->ReportLeftOut(leftOut, warnings);
   this->AnySpecular = anySpecular;
   return !records.empty();

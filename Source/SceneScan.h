@@ -10,6 +10,7 @@
 #ifndef VoxelGISceneScan_h
 #define VoxelGISceneScan_h
 
+#include "ImageSliceProxies.h"
 #include "VoxelGrid.h"
 
 #include "vtkType.h"         // for vtkMTimeType
@@ -133,6 +134,7 @@ private:
   /// Update policy: is a pending change rebuilt this frame?
   bool Due(const Settings& settings, bool settingsChanged, bool pending);
 
+  ImageSliceProxies Slices; // image slices as textured quads
   std::vector<ActorRecord> Records;
   std::vector<ActorRecord> Pending; // scanned, waiting for Accept()
   bool Voxelized = false;

@@ -32,8 +32,8 @@ public:
   }
 
   bool Prepare(const Frame& frame, std::string& error);
-  /// The frame's Bounces bounces, each followed by a rebuild of the mipmaps.
-  void Run(const Frame& frame);
+  /// `bounces` bounces, each followed by a rebuild of the mipmaps.
+  void Run(const Frame& frame, int bounces);
   void ReleaseGraphicsResources(vtkWindow* window);
 
 private:

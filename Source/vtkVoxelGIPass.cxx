@@ -640,17 +640,28 @@ bool vtkVoxelGIPass::UpdateRadiance(bool voxelsChanged, bool& changed)
   }
   in.Lights.Bind();
   in.GridBlock.Bind(frame.Grid);
-  if (in.Lighting.IsCurrent(frame, voxelsChanged || lightsChanged))
+  // Camera-following lights turn with every camera move: their voxel light is kept until
+  // they have turned by more than CameraLightTurn (VTK's own direct light stays exact).
+  const double turn = lightsChanged ? in.Lights.CameraTurnSinceLit() : 0.0;
+  const bool relight = voxelsChanged || (lightsChanged && !(turn <= frame.Config.CameraLightTurn));
+  if (in.Lighting.IsCurrent(frame, relight))
   {
     return true;
   }
-  changed = true;
-  const bool valid = this->LightAndBounce();
+  // Only camera lights turned, and the last solution is for these voxels and settings: the
+  // relight continues from it, and the frame counts as a camera move for the trace.
+  const bool follow = !voxelsChanged && std::isfinite(turn) && in.Lighting.IsCurrent(frame, false);
+  changed = !follow;
+  const bool valid = this->LightAndBounce(follow);
   in.Lighting.SetCurrent(frame, valid);
+  if (valid)
+  {
+    in.Lights.MarkLit();
+  }
   return valid;
 }
 
-bool vtkVoxelGIPass::LightAndBounce()
+bool vtkVoxelGIPass::LightAndBounce(bool follow)
 {
   Internals& in = *this->Internal;
   const voxelgi::Frame& frame = in.Frame;
@@ -675,11 +686,14 @@ bool vtkVoxelGIPass::LightAndBounce()
     this->Refuse(error);
     return false;
   }
-  in.Lighting.Run(frame);
+  // After a camera light's turn the new direct light plus the last bounces' indirect light
+  // is close to the converged radiance: one bounce from it stands for the whole chain.
+  const bool continues = follow && frame.Config.Bounces > 0;
+  in.Lighting.Run(frame, continues);
   in.Mipmap.Run(frame);
   if (frame.Config.Bounces > 0)
   {
-    in.Bounce.Run(frame);
+    in.Bounce.Run(frame, continues ? 1 : frame.Config.Bounces);
   }
   return true;
 }

@@ -206,6 +206,18 @@ public:
 
   ///@{
   /**
+   * How far camera-following lights (VTK's headlight, camera lights, a light kit) may turn,
+   * in degrees in [0, 180], before the voxels are lit and bounced again. Until then a frame
+   * that moves the camera traces with the voxel light of the last relight: only the indirect
+   * light lags, VTK's direct light follows the camera exactly. 0 relights at every turn.
+   * Default: 30 (docs/reference.md gives the error against the turn).
+   */
+  vtkVoxelGISetClampMacro(CameraLightTurn, double, 0.0, 180.0);
+  vtkGetMacro(CameraLightTurn, double);
+  ///@}
+
+  ///@{
+  /**
    * Anisotropic mipmaps (six directional volumes) rather than one isotropic mip chain:
    * less light leaking through thin walls, 6/8 more memory. Default: on.
    */
@@ -575,7 +587,8 @@ protected:
   /// Gather the lights; when voxels, lights or settings changed: LightVoxels, Mipmap,
   /// Bounce. False when GI cannot run (nothing lights the scene).
   bool UpdateRadiance(bool voxelsChanged, bool& changed);
-  bool LightAndBounce();
+  /// Light the voxels and bounce; `follow`: only camera lights turned since the last time.
+  bool LightAndBounce(bool follow);
   /// GBuffer, ConeTrace and Composite (unless `reuse`: nothing changed since the last traced
   /// frame), then Present and VTK's remaining steps.
   void RenderGI(bool reuse);
@@ -600,6 +613,7 @@ protected:
   int LightOcclusion{};
   int ShadowMapResolution{};
   int Bounces{};
+  double CameraLightTurn{};
   vtkTypeBool AnisotropicMipmaps{};
   int DiffuseConeCount{};
   double DiffuseConeAperture{};

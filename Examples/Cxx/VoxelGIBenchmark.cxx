@@ -9,12 +9,14 @@
 // Scenes: the Cornell box (36 triangles), a field of N spheres and boxes on a ground plane
 // (N + 1 actors), an atrium of Sponza scale (about 280k triangles: columns, arches,
 // galleries, drapes, coloured), and one tessellated sphere of about N triangles.
-// Sequences: static (nothing changes), orbit (camera only), light (one light moves),
-// one-moving (one dynamic actor moves), all-moving (every actor moves), and plain (GI off,
-// VTK alone, static); --sequences runs some of them. Per frame: the wall time of Render()
+// Sequences: static (nothing changes), orbit (camera only), headlight-orbit (the same orbit
+// with the scene's lights off and VTK's headlight on: the light turns with the camera), light
+// (one light moves), one-moving (one dynamic actor moves), all-moving (every actor moves), and
+// plain (GI off, VTK alone, static); --sequences runs some of them. Per frame: the wall time of Render()
 // with glFinish, its CPU time (Render() returning, without glFinish), the GPU time span of
 // the frame (two timestamp queries) and per-stage GPU times (timer queries) go to the CSV;
-// the JSON and the printed table hold medians per sequence. --set sets any setting of the
+// the JSON and the printed table hold medians per sequence, and the mean frame (a sequence
+// whose frames differ in kind, as the headlight orbit's relights, is judged by it). --set sets any setting of the
 // settings table (vtkVoxelGISettings), e.g. --set DiffuseConeCount=16; the JSON lists them. Each sequence runs twice: with
 // the stage timers for the stage times, then without them for the frame, CPU and span.
 #include "vtkVoxelGIEGLRenderWindow.h"
@@ -261,6 +263,16 @@ void AddAtrium(vtkRenderer* renderer)
   renderer->ResetCameraClippingRange();
 }
 
+double Mean(const std::vector<double>& values)
+{
+  double sum = 0.0;
+  for (double v : values)
+  {
+    sum += v;
+  }
+  return values.empty() ? 0.0 : sum / static_cast<double>(values.size());
+}
+
 double Median(std::vector<double> values)
 {
   if (values.empty())
@@ -424,12 +436,34 @@ int main(int argc, char* argv[])
     std::string Name;
     std::function<void(int)> Step;
     bool GI;
+    std::function<void(bool)> Setup = [](bool) {}; // true before the sequence, false after
+  };
+  // The headlight orbit's light: the scene's lights are off meanwhile.
+  vtkNew<vtkLight> headlight;
+  headlight->SetLightTypeToHeadlight();
+  auto useHeadlight = [&](bool on) {
+    vtkCollectionSimpleIterator lit;
+    renderer->GetLights()->InitTraversal(lit);
+    while (vtkLight* l = renderer->GetLights()->GetNextLight(lit))
+    {
+      l->SetSwitch(l == headlight.GetPointer() || !on);
+    }
+    if (on)
+    {
+      renderer->AddLight(headlight);
+    }
+    else
+    {
+      renderer->RemoveLight(headlight);
+    }
   };
   double lightBase[3];
   light->GetPosition(lightBase);
   const std::vector<Sequence> sequences = {
     { "static", [](int) {}, true },
     { "orbit", [&](int) { renderer->GetActiveCamera()->Azimuth(2.0); }, true },
+    { "headlight-orbit", [&](int) { renderer->GetActiveCamera()->Azimuth(2.0); }, true,
+      useHeadlight },
     { "light",
       [&](int f) { light->SetPosition(lightBase[0] + 0.3 * std::sin(0.3 * f), lightBase[1],
                      lightBase[2] + 0.3 * std::cos(0.3 * f)); },
@@ -474,6 +508,7 @@ int main(int argc, char* argv[])
   for (const Sequence* sequence : selected)
   {
     gi->SetEnabled(sequence->GI);
+    sequence->Setup(true);
     auto& columns = samples[sequence->Name];
     columns.assign(vtkVoxelGIPass::NUMBER_OF_STAGES + Measured, {});
     // Twice: with the stage timers (their read-back waits for the GPU inside Render(), which
@@ -529,6 +564,7 @@ int main(int argc, char* argv[])
         csv << "," << ran << "\n";
       }
     }
+    sequence->Setup(false);
   }
   glDeleteQueries(2, spanQueries);
 
@@ -550,7 +586,7 @@ int main(int argc, char* argv[])
             << " triangles) " << o.Width << "x" << o.Height << ", " << o.Resolution
             << "^3 voxels, trace at " << o.TraceScale << ", " << window->GetMultiSamples()
             << "x MSAA, " << o.Frames << " frames\n"
-            << std::setw(12) << "sequence" << std::setw(10) << "frame" << std::setw(10) << "cpu"
+            << std::setw(16) << "sequence" << std::setw(10) << "mean" << std::setw(10) << "frame" << std::setw(10) << "cpu"
             << std::setw(10) << "gpu span";
   for (int s = 0; s < vtkVoxelGIPass::NUMBER_OF_STAGES; ++s)
   {
@@ -562,8 +598,9 @@ int main(int argc, char* argv[])
     const std::string& name = selected[q]->Name;
     const auto& columns = samples[name];
     json << "    \"" << name << "\": {\"frame\": " << Median(columns[0])
-         << ", \"cpu\": " << Median(columns[1]) << ", \"gpu_span\": " << Median(columns[2]);
-    std::cout << std::setw(12) << name;
+         << ", \"cpu\": " << Median(columns[1]) << ", \"gpu_span\": " << Median(columns[2])
+         << ", \"frame_mean\": " << Mean(columns[0]);
+    std::cout << std::setw(16) << name << std::setw(10) << Mean(columns[0]);
     for (int m = 0; m < Measured; ++m)
     {
       std::cout << std::setw(10) << Median(columns[m]);

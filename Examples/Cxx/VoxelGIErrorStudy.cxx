@@ -6,6 +6,10 @@
 // compositing rerun), the median per-stage GPU times of the full update and the error against
 // the path-traced reference (RMSE, relMSE, SSIM, FLIP) as CSV. The images of the plain, ssao
 // and defaults configurations are written beside it (OUT-plain.pfm, ...), linear float RGB.
+// A scene lit by camera-following lights (a headlight) also gets CameraLightTurn rows: the
+// image after an orbit of 92 degrees in 2-degree steps that ends at the scene's camera (the
+// voxel light lags as it would for a user), with the orbit's mean frame as camera_ms; the
+// lag itself (the error against the defaults' image) is printed.
 //
 //   VoxelGIErrorStudy [--egl] SCENE REFERENCE.pfm OUT.csv [frames]
 //
@@ -22,6 +26,8 @@
 
 #include "vtkCamera.h"
 #include "vtkFloatArray.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
 #include "vtkNew.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkRenderWindow.h"
@@ -88,6 +94,7 @@ int main(int argc, char* argv[])
     description->SetFileName(scene.c_str());
     return description->Read(renderer);
   };
+  bool cameraLights = false;
   {
     vtkNew<vtkRenderer> probe;
     if (!addScene(probe))
@@ -95,6 +102,14 @@ int main(int argc, char* argv[])
       std::cerr << "unknown scene " << scene << "\n";
       return EXIT_FAILURE;
     }
+    vtkCollectionSimpleIterator it;
+    probe->GetLights()->InitTraversal(it);
+    while (vtkLight* light = probe->GetLights()->GetNextLight(it))
+    {
+      cameraLights = cameraLights || (light->GetSwitch() && !light->LightTypeIsSceneLight());
+    }
+    cameraLights = cameraLights ||
+      (probe->GetLights()->GetNumberOfItems() == 0 && probe->GetAutomaticLightCreation());
   }
   voxelgi::metrics::Image reference;
   if (!voxelgi::metrics::ReadPfm(args[1], reference))
@@ -112,6 +127,16 @@ int main(int argc, char* argv[])
     { "Bounces", { 0, 1, 2, 6 } }, { "TraceResolution", { 0.5, 0.25 } }, { "TemporalReuse", { 0 } },
     { "AnisotropicMipmaps", { 0 } }, { "AmbientOcclusionStrength", { 0, 0.5 } },
     { "SpecularCone", { 0 } } };
+  constexpr double OrbitStep = 2.0;
+  constexpr int OrbitSteps = 46;
+  if (cameraLights)
+  {
+    configs.push_back({ "CameraLightTurn", "CameraLightTurn", 0.0 });
+    for (double turn : { 10.0, 30.0, 60.0, 90.0 })
+    {
+      configs.push_back({ "CameraLightTurn", "CameraLightTurn", turn });
+    }
+  }
   for (const auto& s : sweep)
   {
     for (double v : s.second)
@@ -120,6 +145,7 @@ int main(int argc, char* argv[])
     }
   }
 
+  voxelgi::metrics::Image defaultsImage;
   std::ofstream csv(args[2]);
   csv << "config,setting,value,frame_ms,camera_ms,rmse,relmse,ssim,flip";
   for (int s = 0; s < vtkVoxelGIPass::NUMBER_OF_STAGES; ++s)
@@ -196,7 +222,26 @@ int main(int argc, char* argv[])
     const double frameMs = timeFrames(true);
     // Only the camera moves from now on: the pass reruns tracing and compositing alone.
     gi->SetUpdatePolicy(vtkVoxelGIPass::UPDATE_ON_CHANGE);
-    const double cameraMs = timeFrames(false);
+    double cameraMs = 0.0;
+    if (config.Setting == "CameraLightTurn")
+    {
+      renderer->GetActiveCamera()->Azimuth(-OrbitStep * OrbitSteps);
+      window->Render();
+      for (int step = 0; step < OrbitSteps; ++step)
+      {
+        renderer->GetActiveCamera()->Azimuth(OrbitStep);
+        window->WaitForCompletion();
+        const auto start = std::chrono::steady_clock::now();
+        window->Render();
+        window->WaitForCompletion();
+        cameraMs += std::chrono::duration<double, std::milli>(
+          std::chrono::steady_clock::now() - start).count() / OrbitSteps;
+      }
+    }
+    else
+    {
+      cameraMs = timeFrames(false);
+    }
 
     vtkNew<vtkFloatArray> pixels;
     if (!(usesPass && gi->GetEnabled() &&
@@ -207,6 +252,16 @@ int main(int argc, char* argv[])
     const voxelgi::metrics::Image image =
       voxelgi::metrics::FromRgba(pixels->GetPointer(0), reference.Width, reference.Height);
     const voxelgi::metrics::Errors e = voxelgi::metrics::Compare(image, reference);
+    if (config.Name == "defaults")
+    {
+      defaultsImage = image;
+    }
+    if (config.Setting == "CameraLightTurn" && defaultsImage.Width == image.Width)
+    {
+      const voxelgi::metrics::Errors lag = voxelgi::metrics::Compare(image, defaultsImage);
+      std::cout << "CameraLightTurn " << config.Value << " after the orbit, against the defaults: RMSE "
+                << lag.Rmse << ", FLIP " << lag.Flip << std::endl;
+    }
     if (config.Name == "plain" || config.Name == "ssao" || config.Name == "defaults")
     {
       const std::string& out = args[2];

@@ -23,6 +23,7 @@
 #include "vtkGlyph3DMapper.h"
 #include "vtkImageData.h"
 #include "vtkLight.h"
+#include "vtkLightCollection.h"
 #include "vtkLineSource.h"
 #include "vtkNew.h"
 #include "vtkPlaneSource.h"
@@ -98,6 +99,19 @@ int RoundTrip(vtkRenderer* original, const std::string& name, const std::string&
   VOXELGI_CHECK(reader->Read(copy), "cannot read it back");
   VOXELGI_CHECK(reader->GetSize()[0] == 200 && reader->GetSize()[1] == 200, "size");
   VOXELGI_CHECK(copy->GetActors()->GetNumberOfItems() > 0, "no actors read");
+  // Lights that follow the camera follow it again (the error study orbits with them).
+  auto lightTypes = [](vtkRenderer* r) {
+    std::string types;
+    vtkCollectionSimpleIterator it;
+    r->GetLights()->InitTraversal(it);
+    while (vtkLight* light = r->GetLights()->GetNextLight(it))
+    {
+      types += std::to_string(light->GetLightType());
+    }
+    return types;
+  };
+  VOXELGI_CHECK(lightTypes(copy) == lightTypes(original),
+    "light types " << lightTypes(copy) << ", written " << lightTypes(original));
 
   // The description leaves overlays out, and so does the comparison.
   while (original->GetActors2D()->GetNumberOfItems() > 0)

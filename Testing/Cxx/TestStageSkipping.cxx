@@ -6,6 +6,7 @@
 // unchanged frame re-trace. Changes that neither the actor nor its mapper record must still
 // be seen: a clipping plane moved, a texture's image, a shader uniform, a glyph mapper's
 // source (glyphs are voxelized), an image actor's image, a light beyond the light block's 16.
+// A headlight relights the voxels only after turning by more than CameraLightTurn.
 #include "VoxelGITestUtilities.h"
 #include "vtkVoxelGIPass.h"
 #include "vtkVoxelGIScenes.h"
@@ -63,6 +64,8 @@ std::string Stages(vtkVoxelGIPass* gi)
 
 const std::string Trace = "GBuffer,ConeTrace,Present";
 const std::string Relight = "LightVoxels,Mipmap,Bounce," + Trace;
+// A camera light's relight: one bounce continues from the last solution.
+const std::string Follow = Relight;
 const std::string Full = "Scan,Clear,VoxelizeStatic,VoxelizeDynamic,Resolve," + Relight;
 
 // Largest difference between the pass's composite and a full recompute by a fresh pass.
@@ -127,8 +130,7 @@ int TestStageSkipping(int, char*[])
   panelSource->SetPoint2(-2.5, 1.0, -2.5);
   vtkActor* panel = vtkVoxelGIScenes::AddSource(renderer, panelSource, 1.0, 1.0, 1.0);
   panel->SetTexture(texture);
-  // Glyphs (voxelized, every instance) and an image slice (drawn by VTK, not voxelized, in
-  // the traced image).
+  // Glyphs (voxelized, every instance) and an image slice (voxelized as a textured quad).
   vtkNew<vtkPoints> glyphPoints;
   glyphPoints->InsertNextPoint(2.0, 0.2, 2.0);
   glyphPoints->InsertNextPoint(2.5, 0.2, 2.0);
@@ -149,7 +151,7 @@ int TestStageSkipping(int, char*[])
   slice->GetPointData()->GetScalars()->Fill(128);
   vtkNew<vtkImageActor> sliceActor;
   sliceActor->GetMapper()->SetInputData(slice);
-  sliceActor->SetPosition(1.8, 0.0, -2.5);
+  sliceActor->SetPosition(1.8, 0.5, -2.5); // clear of the floor: no voxels shared
   renderer->AddActor(sliceActor);
   vtkNew<vtkCubeSource> cubeSource;
   cubeSource->SetBounds(0.5, 1.5, 0.0, 1.0, -0.5, 0.5);
@@ -217,13 +219,12 @@ int TestStageSkipping(int, char*[])
           "tint", std::array<float, 3>{ 0.2f, 1.f, 0.2f }.data());
       },
       "Scan,Clear,VoxelizeDynamic,Resolve," + Relight }, // the ball is dynamic since the clip
-    // Not voxelized, but in the traced image.
     { "image slice changed",
       [&] {
         slice->GetPointData()->GetScalars()->Fill(30);
         slice->Modified();
       },
-      "Scan," + Trace },
+      Full },
     { "sixteen more lights",
       [&] {
         for (int l = 0; l < 16; ++l)
@@ -268,6 +269,51 @@ int TestStageSkipping(int, char*[])
     std::cout << "  largest difference from a full recompute: " << difference << std::endl;
     VOXELGI_CHECK(difference < c.Tolerance, c.Name << ": skipping changed the image");
   }
+
+  // Camera-following lights: the scene's lights off, a headlight on. Turns below
+  // CameraLightTurn keep the voxel light; beyond it the voxels are relit and bounced.
+  vtkCollectionSimpleIterator lit;
+  renderer->GetLights()->InitTraversal(lit);
+  while (vtkLight* sceneLight = renderer->GetLights()->GetNextLight(lit))
+  {
+    sceneLight->SwitchOff();
+  }
+  vtkNew<vtkLight> headlight;
+  headlight->SetLightTypeToHeadlight();
+  renderer->AddLight(headlight);
+  gi->SetCameraLightTurn(15.0);
+  window->Render();
+  vtkCamera* camera = renderer->GetActiveCamera();
+  const std::pair<std::function<void()>, std::string> turns[] = {
+    { [&] { camera->Azimuth(10.0); }, "Scan," + Trace },
+    { [&] { camera->Azimuth(-4.0); }, "Scan," + Trace },  // 6 degrees from the lit direction
+    { [&] { camera->Azimuth(10.0); }, "Scan," + Follow }, // 16
+    { [&] { camera->Dolly(1.2); }, "Scan," + Trace }, // a directional light does not turn
+    { [&] { camera->Elevation(14.0); }, "Scan," + Trace },
+    { [&] { gi->SetCameraLightTurn(0.0); }, "Scan," + Trace }, // a setting: re-traced
+    { [&] { camera->Azimuth(1.0); }, "Scan," + Follow },
+  };
+  for (const auto& turn : turns)
+  {
+    turn.first();
+    renderer->ResetCameraClippingRange();
+    window->Render();
+    std::cout << "headlight: " << Stages(gi) << std::endl;
+    VOXELGI_CHECK(Stages(gi) == turn.second, "a headlight change ran " << Stages(gi) << ", expected " << turn.second);
+  }
+  // The continued solution against a converged one.
+  const double followed = DifferenceFromFullRecompute(renderer, window, gi);
+  std::cout << "  followed: largest difference from a full recompute: " << followed << std::endl;
+  VOXELGI_CHECK(followed < 0.02, "a camera light's relight differs from a full recompute");
+  headlight->SetIntensity(0.8); // not only turned: everything relit
+  window->Render();
+  VOXELGI_CHECK(Stages(gi) == "Scan," + Relight, "a headlight's intensity ran " << Stages(gi));
+  // Within the glyph case's bound (the glyphs stay dynamic).
+  const double relit = DifferenceFromFullRecompute(renderer, window, gi);
+  std::cout << "  relit: largest difference from a full recompute: " << relit << std::endl;
+  VOXELGI_CHECK(relit < 4e-3, "relit headlight differs from a full recompute");
+  renderer->RemoveLight(headlight);
+  light->SwitchOn();
 
   // Update policies.
   gi->SetUpdatePolicyToOnDemand();

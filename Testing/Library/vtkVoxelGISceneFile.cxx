@@ -252,6 +252,7 @@ Json::Value Material(vtkActor* actor, bool colored, const std::string& normals)
 // The light as a scene light for the current camera, or a problem.
 Json::Value Light(vtkLight* light, vtkCamera* camera, std::string& problem, std::string& note)
 {
+  Json::Value l;
   Vec3 position, focal;
   light->GetPosition(position.data());
   light->GetFocalPoint(focal.data());
@@ -263,6 +264,11 @@ Json::Value Light(vtkLight* light, vtkCamera* camera, std::string& problem, std:
   }
   else if (light->LightTypeIsCameraLight())
   {
+    // Read() makes it a camera light again, placed as in the camera's frame.
+    Json::Value follows;
+    follows["position"] = ToJson(position.data());
+    follows["focal_point"] = ToJson(focal.data());
+    l["camera_light"] = follows;
     vtkMatrix4x4* m = camera->GetCameraLightTransformMatrix();
     for (Vec3* p : { &position, &focal })
     {
@@ -272,7 +278,9 @@ Json::Value Light(vtkLight* light, vtkCamera* camera, std::string& problem, std:
     }
     note = "camera lights are written as scene lights for the current camera";
   }
-  Json::Value l;
+  // Whether it follows the camera (Cycles sees the light of the current camera alone; an
+  // orbit in the error study moves it).
+  l["headlight"] = light->LightTypeIsHeadlight() != 0;
   l["color"] = ToJson(light->GetDiffuseColor());
   l["intensity"] = light->GetIntensity();
   const double* attenuation = light->GetAttenuationValues();
@@ -685,6 +693,16 @@ bool vtkVoxelGISceneFile::Read(vtkRenderer* renderer)
       light->SetPositional(true);
       light->SetConeAngle(90.0);
       light->SetPosition(FromJson(l["position"]).data());
+    }
+    if (l["headlight"].asBool())
+    {
+      light->SetLightTypeToHeadlight();
+    }
+    else if (l.isMember("camera_light"))
+    {
+      light->SetLightTypeToCameraLight();
+      light->SetPosition(FromJson(l["camera_light"]["position"]).data());
+      light->SetFocalPoint(FromJson(l["camera_light"]["focal_point"]).data());
     }
     renderer->AddLight(light);
   }

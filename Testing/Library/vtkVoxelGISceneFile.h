@@ -18,8 +18,9 @@
  * composite mappers, volumes, image slices and other 3D props, spot lights, attenuated lights,
  * image-based lighting, gradient or textured backgrounds, parallel projection, and ambient
  * terms other than the background's sky light (Ka Ca = background x diffuse colour). Camera
- * lights and headlights are written as the scene lights they are for the current camera, and
- * overlays (2D actors) are left out; GetNotes() says so.
+ * lights and headlights are written as the scene lights they are for the current camera,
+ * marked so that Read() makes them follow the camera again, and overlays (2D actors) are left
+ * out; GetNotes() says so.
  *
  * @sa vtkVoxelGIScenes vtkVoxelGIPass
  */
