@@ -10,7 +10,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 uniform sampler2D gbufferColor;
 uniform sampler2D gbufferNormal;
-uniform sampler2D gbufferAmbient;  // VTK's ambient term of non-emitters
+uniform sampler2D gbufferAmbient;  // VTK's ambient term of non-emitters; a: coverage
 uniform sampler2D traceIndirect;   // indirect rgb, AO
 uniform sampler2D traceShadowed;   // occluded direct rgb
 uniform vec2 traceSize;            // texels of the traced buffers
@@ -84,9 +84,12 @@ void main()
   vec3 ambient = ambientSample.a == 1.0 && !any(isnan(ambientSample.rgb))
     ? clamp(ambientSample.rgb, vec3(0.0), color.rgb)
     : vec3(0.0);
-  vec3 direct = max(color.rgb - ambient - shadowed, vec3(0.0)) +
+  // The share of the pixel that polydata surfaces cover (below 1 on multisampled edges, where
+  // VTK's colour is already a blend with what lies behind): the traced terms count that much.
+  float coverage = clamp(ambientSample.a, 0.0, 1.0);
+  vec3 direct = max(color.rgb - ambient - coverage * shadowed, vec3(0.0)) +
     ambient * mix(1.0, indirectAO.a, aoStrength);
-  vec3 result = direct + indirectAO.rgb;
+  vec3 result = direct + coverage * indirectAO.rgb;
   if (compositeView == 1)
   {
     result = direct;

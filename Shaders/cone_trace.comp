@@ -50,6 +50,15 @@ float specularTanHalf(float power)
   return clamp(tan(sqrt(2.0 / (max(power, 0.0) + 2.0))), 0.02, 1.2);
 }
 
+// What VTK's highlight of coefficient 1 reflects of the light around its lobe. VTK's
+// Blinn-Phong term ks (n.h)^p is not normalized: its peak is ks whatever the power, so its
+// lobe holds about ks 8 / (p + 8) of the incoming energy (the normalized Blinn-Phong lobe
+// has the factor (p + 8) / 8). The specular cone carries that share, not ks itself.
+float specularReflectance(float power)
+{
+  return 8.0 / (max(power, 0.0) + 8.0);
+}
+
 // The traced pixel's G-buffer sample (nearest), as the full-screen pass read it.
 vec4 gbufferAt(sampler2D image, vec2 uv)
 {
@@ -232,7 +241,7 @@ void main()
   {
     vec3 r = reflect(viewDir, n);
     float ignored;
-    indirect += specular * specularIntensity *
+    indirect += specular * specularIntensity * specularReflectance(normalSpec.w) *
       voxelConeTrace(origin, r, specularTanHalf(normalSpec.w), 1.0, maxDistance, 0.0, p, n, ignored).rgb;
   }
 

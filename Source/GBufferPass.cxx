@@ -12,13 +12,17 @@
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLPolyDataMapper.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
 #include "vtkProperty.h"
 #include "vtkRenderPassCollection.h"
+#include "vtkRenderbuffer.h"
 #include "vtkRenderState.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkSequencePass.h"
 #include "vtkShaderProgram.h"
 #include "vtk_glew.h"
+
+#include <algorithm>
 
 namespace voxelgi
 {
@@ -58,6 +62,36 @@ bool GBufferPass::Prepare(const Frame& frame, std::string&)
   this->Material->Resize(width, height);
   this->Ambient->Resize(width, height);
   this->Depth->Resize(width, height);
+  // The window's multisampling, within what float colour renderbuffers allow here.
+  GLint maxSamples = 0;
+  glGetIntegerv(GL_MAX_SAMPLES, &maxSamples);
+  const unsigned int samples = static_cast<unsigned int>(
+    std::min(frame.Window->GetMultiSamples(), static_cast<int>(maxSamples)));
+  if (samples != this->Samples)
+  {
+    this->Samples = samples > 1 ? samples : 0;
+    this->Multisampled = nullptr;
+  }
+  if (this->Samples > 0)
+  {
+    if (!this->Multisampled)
+    {
+      const unsigned int formats[5] = { GL_RGBA16F, GL_RGBA16F, GL_RGBA8, GL_RGBA16F,
+        GL_DEPTH_COMPONENT32F };
+      for (int i = 0; i < 5; ++i)
+      {
+        this->SampleBuffers[i] = vtkSmartPointer<vtkRenderbuffer>::New();
+        this->SampleBuffers[i]->SetContext(frame.Window);
+        this->SampleBuffers[i]->Create(formats[i], width, height, this->Samples);
+      }
+      this->Multisampled = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+      this->Multisampled->SetContext(frame.Window);
+    }
+    for (auto& buffer : this->SampleBuffers)
+    {
+      buffer->Resize(width, height);
+    }
+  }
   if (frame.LitScene != this->LitScene)
   {
     this->LitScene = frame.LitScene;
@@ -87,8 +121,38 @@ void GBufferPass::Run(const Frame& frame)
   }
   vtkRenderState state(frame.Renderer);
   state.SetPropArrayAndCount(frame.State->GetPropArray(), frame.State->GetPropArrayCount());
-  state.SetFrameBuffer(this->Framebuffer);
+  state.SetFrameBuffer(this->Samples > 0 ? this->Multisampled : this->Framebuffer);
   this->Render(&state);
+  if (this->Samples > 0)
+  {
+    this->Resolve();
+  }
+}
+
+void GBufferPass::Resolve()
+{
+  this->Framebuffer->SaveCurrentBindingsAndBuffers();
+  // Bind() for both targets: it also creates the framebuffer on the first frame.
+  this->Framebuffer->Bind();
+  this->Framebuffer->AddColorAttachment(0, this->Color);
+  this->Framebuffer->AddColorAttachment(1, this->Normal);
+  this->Framebuffer->AddColorAttachment(2, this->Material);
+  this->Framebuffer->AddColorAttachment(3, this->Ambient);
+  this->Framebuffer->AddDepthAttachment(this->Depth);
+  this->Multisampled->Bind(GL_READ_FRAMEBUFFER);
+  // Blits are scissored: VTK's scissor box need not cover the whole buffer.
+  vtkOpenGLState* state = this->Framebuffer->GetContext()->GetState();
+  vtkOpenGLState::ScopedglEnableDisable scissor(state, GL_SCISSOR_TEST);
+  state->vtkglDisable(GL_SCISSOR_TEST);
+  const int w = this->Color->GetWidth(), h = this->Color->GetHeight();
+  for (unsigned int i = 0; i < 4; ++i)
+  {
+    glReadBuffer(GL_COLOR_ATTACHMENT0 + i);
+    glDrawBuffer(GL_COLOR_ATTACHMENT0 + i);
+    glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  }
+  glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+  this->Framebuffer->RestorePreviousBindingsAndBuffers();
 }
 
 void GBufferPass::Render(const vtkRenderState* s)
@@ -107,15 +171,27 @@ void GBufferPass::Render(const vtkRenderState* s)
 
 void GBufferPass::Begin()
 {
-  this->Framebuffer->SaveCurrentBindingsAndBuffers();
-  this->Framebuffer->Bind();
-  this->Framebuffer->AddColorAttachment(0, this->Color);
-  this->Framebuffer->AddColorAttachment(1, this->Normal);
-  this->Framebuffer->AddColorAttachment(2, this->Material);
-  this->Framebuffer->AddColorAttachment(3, this->Ambient);
-  this->Framebuffer->AddDepthAttachment(this->Depth);
-  this->Framebuffer->ActivateDrawBuffers(4);
-  this->Framebuffer->StartNonOrtho(this->Color->GetWidth(), this->Color->GetHeight());
+  vtkOpenGLFramebufferObject* target = this->Samples > 0 ? this->Multisampled : this->Framebuffer;
+  target->SaveCurrentBindingsAndBuffers();
+  target->Bind();
+  if (this->Samples > 0)
+  {
+    for (unsigned int i = 0; i < 4; ++i)
+    {
+      target->AddColorAttachment(i, this->SampleBuffers[i]);
+    }
+    target->AddDepthAttachment(this->SampleBuffers[4]);
+  }
+  else
+  {
+    target->AddColorAttachment(0, this->Color);
+    target->AddColorAttachment(1, this->Normal);
+    target->AddColorAttachment(2, this->Material);
+    target->AddColorAttachment(3, this->Ambient);
+    target->AddDepthAttachment(this->Depth);
+  }
+  target->ActivateDrawBuffers(4);
+  target->StartNonOrtho(this->Color->GetWidth(), this->Color->GetHeight());
   for (unsigned int i = 0; i < 3; ++i)
   {
     this->BlendWasEnabled[i] = glIsEnabledi(GL_BLEND, i + 1) == GL_TRUE;
@@ -140,8 +216,9 @@ void GBufferPass::End()
       glEnablei(GL_BLEND, i + 1);
     }
   }
-  this->Framebuffer->UnBind();
-  this->Framebuffer->RestorePreviousBindingsAndBuffers();
+  vtkOpenGLFramebufferObject* target = this->Samples > 0 ? this->Multisampled : this->Framebuffer;
+  target->UnBind();
+  target->RestorePreviousBindingsAndBuffers();
 }
 
 //------------------------------------------------------------------------------
@@ -189,7 +266,7 @@ bool GBufferPass::SetShaderParameters(
 {
   // Polydata mappers write all attachments, other mappers only the colour.
   const bool polyData = vtkOpenGLPolyDataMapper::SafeDownCast(mapper) != nullptr;
-  this->Framebuffer->ActivateDrawBuffers(polyData ? 4 : 1);
+  (this->Samples > 0 ? this->Multisampled : this->Framebuffer)->ActivateDrawBuffers(polyData ? 4 : 1);
   if (polyData)
   {
     // An emitter's ambient colour is its emission, which nothing occludes. A surface VTK
@@ -223,6 +300,20 @@ void GBufferPass::ReleaseGraphicsResources(vtkWindow* window)
   }
   this->Framebuffer = nullptr;
   this->Color = this->Normal = this->Material = this->Ambient = this->Depth = nullptr;
+  for (auto& buffer : this->SampleBuffers)
+  {
+    if (buffer)
+    {
+      buffer->ReleaseGraphicsResources(window);
+    }
+    buffer = nullptr;
+  }
+  if (this->Multisampled)
+  {
+    this->Multisampled->ReleaseGraphicsResources(window);
+  }
+  this->Multisampled = nullptr;
+  this->Samples = 0;
 }
 
 }

@@ -4,7 +4,10 @@
  * fragment code it injects into the polydata mappers (gbuffer.frag) adds the view-space
  * normal and specular power (attachment 1) and the albedo and specular intensity
  * (attachment 2); depth goes to a float texture (the vtkSSAOPass pattern). A delegate that is
- * not a vtkRenderStepsPass renders whole into attachment 0.
+ * not a vtkRenderStepsPass renders whole into attachment 0. In a multisampled window VTK
+ * draws into multisampled renderbuffers with the window's sample count, resolved into the
+ * textures (colours averaged, so edges and lines keep VTK's anti-aliasing; depth from one
+ * sample; the ambient attachment's alpha becomes the pixel's coverage by polydata surfaces).
  */
 #ifndef VoxelGIGBufferPass_h
 #define VoxelGIGBufferPass_h
@@ -18,6 +21,7 @@
 
 class vtkCameraPass;
 class vtkOpenGLFramebufferObject;
+class vtkRenderbuffer;
 class vtkRenderPassCollection;
 class vtkSequencePass;
 
@@ -61,9 +65,11 @@ private:
   GBufferPass(const GBufferPass&) = delete;
   void operator=(const GBufferPass&) = delete;
 
-  /// Bind the framebuffer with all attachments (saving the current bindings) / restore.
+  /// Bind the framebuffer VTK draws into (saving the current bindings) / restore.
   void Begin();
   void End();
+  /// Average the multisampled attachments into the textures.
+  void Resolve();
   static void DisableDataBlending();
 
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
@@ -72,6 +78,10 @@ private:
   vtkSmartPointer<vtkTextureObject> Material;
   vtkSmartPointer<vtkTextureObject> Ambient;
   vtkSmartPointer<vtkTextureObject> Depth;
+  // With multisampling: the framebuffer VTK draws into, and its attachments.
+  unsigned int Samples = 0;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> Multisampled;
+  vtkSmartPointer<vtkRenderbuffer> SampleBuffers[5]; // 4 colours, depth
   bool BlendWasEnabled[3] = { false, false, false };
   bool LitScene = true;
   vtkRenderPass* Opaque = nullptr; // what Render() runs this frame

@@ -8,6 +8,7 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtkRenderStepsPass.h"
+#include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
@@ -62,8 +63,18 @@ int Present::RenderRemainingSteps(const Frame& frame)
   vtkOpenGLState::ScopedglEnableDisable depthTest(ostate, GL_DEPTH_TEST);
   ostate->vtkglEnable(GL_DEPTH_TEST);
   int rendered = 0;
-  for (vtkRenderPass* pass : { steps->GetTranslucentPass(), steps->GetVolumetricPass(),
-         steps->GetOverlayPass(), steps->GetPostProcessPass() })
+  // Translucent geometry as the renderer alone draws it: with its order-independent
+  // translucency or depth peeling as its settings say (the steps pass's own translucent
+  // step blends in drawing order).
+  vtkRenderer* renderer = frame.Renderer;
+  if (steps->GetTranslucentPass())
+  {
+    const int before = renderer->GetNumberOfPropsRendered();
+    renderer->DeviceRenderTranslucentPolygonalGeometry();
+    rendered += renderer->GetNumberOfPropsRendered() - before;
+  }
+  for (vtkRenderPass* pass :
+    { steps->GetVolumetricPass(), steps->GetOverlayPass(), steps->GetPostProcessPass() })
   {
     if (pass)
     {

@@ -194,6 +194,8 @@ struct View
     : Size(size)
   {
     this->Window->SetSize(size, size);
+    // Pixels are compared with closed forms one by one: no multisampled blends at edges.
+    this->Window->SetMultiSamples(0);
     this->Window->AddRenderer(this->Renderer);
     this->GI->SetVoxelResolution(resolution);
     this->Renderer->SetPass(this->GI);

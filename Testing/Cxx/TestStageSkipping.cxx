@@ -244,13 +244,15 @@ int TestStageSkipping(int, char*[])
       "Scan," + Trace },
     // Last: from here on scattered pixels differ from a fresh pass by one half-float step of
     // the indirect light (2.4e-4), also after a forced full rebuild; stale voxels differ by
-    // far more.
+    // far more. The changed panel also turns dynamic and leaves the voxels it shares with the
+    // floor to it (as the glyphs below): in the window's multisampled edge pixels where the
+    // panel meets the floor that shows, up to 2.7e-3.
     { "texture image changed",
       [&] {
         image->GetPointData()->GetScalars()->Fill(250);
         image->Modified();
       },
-      Full, 5e-4 },
+      Full, 4e-3 },
     // Same bounds, so the grid stays. The changed glyph actor turns dynamic, and a dynamic
     // prop leaves the voxels it shares with static ones (the floor under the glyphs) to
     // them, where a fresh pass, to which the glyphs are static, averages both colours: the

@@ -9,10 +9,11 @@ Blinn-Phong highlight, and its lights do not fall off):
 - diffuse term (diffuse coefficient x diffuse colour, or x the scalar colours, which arrive
   as the OBJ's vertex colours) -> Diffuse BSDF of that colour;
 - specular term ks (specular coefficient x specular colour) of power n -> Glossy BSDF
-  (Beckmann) of colour ks and roughness (2 / (n + 2))^(1/4), i.e. Beckmann alpha
-  sqrt(2 / (n + 2)) (Walter et al. 2007), added to the diffuse one: the lobe the pass's
-  specular cone stands for. VTK's own highlight is not normalized (peak ks I whatever n), so
-  direct highlights differ by design;
+  (Beckmann) of colour ks 8 / (n + 8) and roughness (2 / (n + 2))^(1/4), i.e. Beckmann alpha
+  sqrt(2 / (n + 2)) (Walter et al. 2007), added to the diffuse one. VTK's highlight is not
+  normalized (peak ks I whatever n): its lobe reflects about ks 8 / (n + 8) of the light, and
+  a Beckmann lobe of that colour has VTK's peak, ks (n + 2) / (n + 8) I. The pass's specular
+  cone (half-angle tan sqrt(2 / (n + 2))) carries the same share;
 - vtkVoxelGIPass::EMISSION (r, g, b) -> Emission shader, colour (r, g, b) / max, strength max:
   its radiance is the emission, as the pass treats it;
 - unattenuated VTK point light of intensity I -> point light of radius 0, power 4 pi^2 I, with
@@ -72,7 +73,9 @@ for obj in bpy.context.scene.objects:
             if max(desc_material["specular"]) > 0.0:
                 glossy = nodes.new("ShaderNodeBsdfGlossy")
                 glossy.distribution = 'BECKMANN'
-                glossy.inputs["Color"].default_value = (*desc_material["specular"], 1.0)
+                share = 8.0 / (desc_material["specular_power"] + 8.0)
+                glossy.inputs["Color"].default_value = \
+                    (*[share * k for k in desc_material["specular"]], 1.0)
                 glossy.inputs["Roughness"].default_value = \
                     (2.0 / (desc_material["specular_power"] + 2.0)) ** 0.25
                 both = nodes.new("ShaderNodeAddShader")
