@@ -18,6 +18,7 @@ Settings Snapshot(vtkVoxelGIPass* pass, bool hasConservativeRaster)
   c.ShadowMapResolution = pass->GetShadowMapResolution();
   c.Bounces = pass->GetBounces();
   c.CameraLightTurn = pass->GetCameraLightTurn();
+  c.GBufferSamples = pass->GetGBufferSamples();
   c.AnisotropicMipmaps = pass->GetAnisotropicMipmaps() != 0;
   c.DiffuseConeCount = pass->GetDiffuseConeCount();
   c.DiffuseConeAperture = pass->GetDiffuseConeAperture();

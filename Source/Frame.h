@@ -37,6 +37,7 @@ struct Settings
   int ShadowMapResolution = 0;
   int Bounces = 0;
   double CameraLightTurn = 0.0;
+  int GBufferSamples = 0;
   bool AnisotropicMipmaps = true;
   int DiffuseConeCount = 1;
   double DiffuseConeAperture = 0.0;

@@ -62,11 +62,11 @@ bool GBufferPass::Prepare(const Frame& frame, std::string&)
   this->Material->Resize(width, height);
   this->Ambient->Resize(width, height);
   this->Depth->Resize(width, height);
-  // The window's multisampling, within what float colour renderbuffers allow here.
+  // The window's multisampling, up to the setting and what renderbuffers allow here.
   GLint maxSamples = 0;
   glGetIntegerv(GL_MAX_SAMPLES, &maxSamples);
-  const unsigned int samples = static_cast<unsigned int>(
-    std::min(frame.Window->GetMultiSamples(), static_cast<int>(maxSamples)));
+  const unsigned int samples = static_cast<unsigned int>(std::min(
+    { frame.Window->GetMultiSamples(), static_cast<int>(maxSamples), frame.Config.GBufferSamples }));
   if (samples != this->Samples)
   {
     this->Samples = samples > 1 ? samples : 0;

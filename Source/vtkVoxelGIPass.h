@@ -210,10 +210,22 @@ public:
    * in degrees in [0, 180], before the voxels are lit and bounced again. Until then a frame
    * that moves the camera traces with the voxel light of the last relight: only the indirect
    * light lags, VTK's direct light follows the camera exactly. 0 relights at every turn.
-   * Default: 30 (docs/reference.md gives the error against the turn).
+   * Default: 45 (docs/reference.md gives the error against the turn, docs/performance.md the
+   * cost).
    */
   vtkVoxelGISetClampMacro(CameraLightTurn, double, 0.0, 180.0);
   vtkGetMacro(CameraLightTurn, double);
+  ///@}
+
+  ///@{
+  /**
+   * Most samples per pixel of the G-buffer, in [0, 16], in a multisampled window: VTK draws
+   * its opaque geometry with the window's count up to this, resolved before tracing, so that
+   * edges, lines on surfaces and thin text keep VTK's anti-aliasing. 0 or 1: one sample
+   * (edges aliased). Default: 0 (docs/performance.md gives the cost).
+   */
+  vtkSetClampMacro(GBufferSamples, int, 0, 16);
+  vtkGetMacro(GBufferSamples, int);
   ///@}
 
   ///@{
@@ -614,6 +626,7 @@ protected:
   int ShadowMapResolution{};
   int Bounces{};
   double CameraLightTurn{};
+  int GBufferSamples{};
   vtkTypeBool AnisotropicMipmaps{};
   int DiffuseConeCount{};
   double DiffuseConeAperture{};

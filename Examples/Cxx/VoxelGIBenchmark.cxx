@@ -505,6 +505,10 @@ int main(int argc, char* argv[])
   glGenQueries(2, spanQueries);
   constexpr int Measured = 3; // frame, CPU, GPU span; then the stages
   std::map<std::string, std::vector<std::vector<double>>> samples; // per sequence: columns
+  // Every run starts from the same view, so that sequences that move the camera (the orbit
+  // under scene lights and under the headlight) cover the same views.
+  vtkNew<vtkCamera> start;
+  start->DeepCopy(renderer->GetActiveCamera());
   for (const Sequence* sequence : selected)
   {
     gi->SetEnabled(sequence->GI);
@@ -516,6 +520,7 @@ int main(int argc, char* argv[])
     for (const bool timed : { true, false })
     {
       gi->SetTimeStages(timed);
+      renderer->GetActiveCamera()->DeepCopy(start);
       for (int f = -o.Warmup; f < o.Frames; ++f)
       {
         sequence->Step(f);

@@ -132,7 +132,7 @@ int main(int argc, char* argv[])
   if (cameraLights)
   {
     configs.push_back({ "CameraLightTurn", "CameraLightTurn", 0.0 });
-    for (double turn : { 10.0, 30.0, 60.0, 90.0 })
+    for (double turn : { 10.0, 30.0, 45.0, 60.0, 90.0 })
     {
       configs.push_back({ "CameraLightTurn", "CameraLightTurn", turn });
     }

@@ -3,7 +3,7 @@
 // default order-independent translucency), "peeling" (depth peeling), "volume" (a GPU
 // ray-cast volume), "overlay" (text): two intersecting translucent props over an opaque plane
 // with a line on it; case "msaa": the same in an 8x multisampled window, whose edges and line
-// the G-buffer keeps anti-aliased. In a scene where GI has nothing to add (indirect light, AO,
+// the G-buffer keeps anti-aliased (GBufferSamples 8). In a scene where GI has nothing to add (indirect light, AO,
 // shadow and specular cones off), against plain VTK in the same window: at most 0.5 % of the
 // pixels may differ by more than 3/255.
 #include "VoxelGITestUtilities.h"
@@ -130,6 +130,7 @@ int TestGIVTKLook(int argc, char* argv[])
   gi->SetAmbientOcclusionStrength(0.0);
   gi->SetConeShadows(false);
   gi->SetSpecularCone(false);
+  gi->SetGBufferSamples(8);
   renderer->SetPass(gi);
   window->Render();
   VOXELGI_CHECK(gi->GetGIActive(), "GI did not run");
