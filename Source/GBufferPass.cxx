@@ -65,11 +65,12 @@ bool GBufferPass::Prepare(const Frame& frame, std::string&)
   // The window's multisampling, up to the setting and what renderbuffers allow here.
   GLint maxSamples = 0;
   glGetIntegerv(GL_MAX_SAMPLES, &maxSamples);
-  const unsigned int samples = static_cast<unsigned int>(std::min(
-    { frame.Window->GetMultiSamples(), static_cast<int>(maxSamples), frame.Config.GBufferSamples }));
+  const int wanted = std::min(
+    { frame.Window->GetMultiSamples(), static_cast<int>(maxSamples), frame.Config.GBufferSamples });
+  const unsigned int samples = wanted > 1 ? static_cast<unsigned int>(wanted) : 0;
   if (samples != this->Samples)
   {
-    this->Samples = samples > 1 ? samples : 0;
+    this->Samples = samples;
     this->Multisampled = nullptr;
   }
   if (this->Samples > 0)
@@ -121,7 +122,7 @@ void GBufferPass::Run(const Frame& frame)
   }
   vtkRenderState state(frame.Renderer);
   state.SetPropArrayAndCount(frame.State->GetPropArray(), frame.State->GetPropArrayCount());
-  state.SetFrameBuffer(this->Samples > 0 ? this->Multisampled : this->Framebuffer);
+  state.SetFrameBuffer(this->Target());
   this->Render(&state);
   if (this->Samples > 0)
   {
@@ -134,11 +135,7 @@ void GBufferPass::Resolve()
   this->Framebuffer->SaveCurrentBindingsAndBuffers();
   // Bind() for both targets: it also creates the framebuffer on the first frame.
   this->Framebuffer->Bind();
-  this->Framebuffer->AddColorAttachment(0, this->Color);
-  this->Framebuffer->AddColorAttachment(1, this->Normal);
-  this->Framebuffer->AddColorAttachment(2, this->Material);
-  this->Framebuffer->AddColorAttachment(3, this->Ambient);
-  this->Framebuffer->AddDepthAttachment(this->Depth);
+  this->AttachTextures();
   this->Multisampled->Bind(GL_READ_FRAMEBUFFER);
   // Blits are scissored: VTK's scissor box need not cover the whole buffer.
   vtkOpenGLState* state = this->Framebuffer->GetContext()->GetState();
@@ -169,9 +166,23 @@ void GBufferPass::Render(const vtkRenderState* s)
   this->PostRender(s);
 }
 
+vtkOpenGLFramebufferObject* GBufferPass::Target() const
+{
+  return this->Samples > 0 ? this->Multisampled : this->Framebuffer;
+}
+
+void GBufferPass::AttachTextures()
+{
+  this->Framebuffer->AddColorAttachment(0, this->Color);
+  this->Framebuffer->AddColorAttachment(1, this->Normal);
+  this->Framebuffer->AddColorAttachment(2, this->Material);
+  this->Framebuffer->AddColorAttachment(3, this->Ambient);
+  this->Framebuffer->AddDepthAttachment(this->Depth);
+}
+
 void GBufferPass::Begin()
 {
-  vtkOpenGLFramebufferObject* target = this->Samples > 0 ? this->Multisampled : this->Framebuffer;
+  vtkOpenGLFramebufferObject* target = this->Target();
   target->SaveCurrentBindingsAndBuffers();
   target->Bind();
   if (this->Samples > 0)
@@ -184,11 +195,7 @@ void GBufferPass::Begin()
   }
   else
   {
-    target->AddColorAttachment(0, this->Color);
-    target->AddColorAttachment(1, this->Normal);
-    target->AddColorAttachment(2, this->Material);
-    target->AddColorAttachment(3, this->Ambient);
-    target->AddDepthAttachment(this->Depth);
+    this->AttachTextures();
   }
   target->ActivateDrawBuffers(4);
   target->StartNonOrtho(this->Color->GetWidth(), this->Color->GetHeight());
@@ -216,7 +223,7 @@ void GBufferPass::End()
       glEnablei(GL_BLEND, i + 1);
     }
   }
-  vtkOpenGLFramebufferObject* target = this->Samples > 0 ? this->Multisampled : this->Framebuffer;
+  vtkOpenGLFramebufferObject* target = this->Target();
   target->UnBind();
   target->RestorePreviousBindingsAndBuffers();
 }
@@ -266,7 +273,7 @@ bool GBufferPass::SetShaderParameters(
 {
   // Polydata mappers write all attachments, other mappers only the colour.
   const bool polyData = vtkOpenGLPolyDataMapper::SafeDownCast(mapper) != nullptr;
-  (this->Samples > 0 ? this->Multisampled : this->Framebuffer)->ActivateDrawBuffers(polyData ? 4 : 1);
+  this->Target()->ActivateDrawBuffers(polyData ? 4 : 1);
   if (polyData)
   {
     // An emitter's ambient colour is its emission, which nothing occludes. A surface VTK

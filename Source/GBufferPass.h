@@ -70,6 +70,10 @@ private:
   void End();
   /// Average the multisampled attachments into the textures.
   void Resolve();
+  /// The framebuffer VTK draws into: the multisampled one, or the textures' own.
+  vtkOpenGLFramebufferObject* Target() const;
+  /// Attach the textures to the textures' framebuffer (bound).
+  void AttachTextures();
   static void DisableDataBlending();
 
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;

@@ -1,7 +1,5 @@
 #include "ImageSliceProxies.h"
 
-#include "SceneScan.h"
-
 #include "vtkActor.h"
 #include "vtkCellArray.h"
 #include "vtkFloatArray.h"
@@ -30,10 +28,11 @@ namespace voxelgi
 
 namespace
 {
-/// What the proxy is built from: the slice's signature, its property and lookup table.
-vtkMTimeType SliceTime(vtkImageSlice* slice)
+/// What the proxy is built from: the slice's signature (as the scan found it), its property
+/// and lookup table.
+vtkMTimeType SliceTime(vtkImageSlice* slice, vtkMTimeType signature)
 {
-  vtkMTimeType t = SceneScan::PropSignature(slice);
+  vtkMTimeType t = signature;
   if (vtkImageProperty* property = slice->GetProperty())
   {
     t = std::max(t, property->GetMTime());
@@ -101,10 +100,11 @@ std::string ImageSliceProxies::LeftOutReason(vtkImageSlice* slice)
   return std::string();
 }
 
-vtkActor* ImageSliceProxies::Update(vtkImageSlice* slice, std::string& reason)
+vtkActor* ImageSliceProxies::Update(
+  vtkImageSlice* slice, vtkMTimeType signature, std::string& reason)
 {
   Proxy& proxy = this->Proxies[slice];
-  const vtkMTimeType time = SliceTime(slice);
+  const vtkMTimeType time = SliceTime(slice, signature);
   if (!proxy.Actor || proxy.Synced != time)
   {
     if (!proxy.Actor)
@@ -126,15 +126,38 @@ bool ImageSliceProxies::Build(vtkImageSlice* slice, vtkActor* proxy, std::string
   auto* mapper = vtkImageSliceMapper::SafeDownCast(slice->GetMapper());
   mapper->Update();
   vtkImageData* image = mapper->GetInput();
-  vtkDataArray* scalars = image ? image->GetPointData()->GetScalars() : nullptr;
-  if (!scalars)
+  if (!image || !image->GetPointData()->GetScalars())
   {
     reason = std::string(slice->GetClassName()) + " (no image scalars)";
     return false;
   }
-  // The displayed slice: a 2D image's extent, or one slice of a 3D image across the mapper's
-  // orientation, within an image actor's display extent.
-  int extent[6];
+  SliceExtent extent;
+  if (!DisplayedExtent(slice, image, extent))
+  {
+    reason = std::string(slice->GetClassName()) + " (a slice without area)";
+    return false;
+  }
+  vtkNew<vtkPolyDataMapper> quadMapper;
+  quadMapper->SetInputData(Quad(image, extent));
+  quadMapper->ScalarVisibilityOff();
+  proxy->SetMapper(quadMapper);
+  proxy->SetTexture(Texture(slice, image, extent));
+  // Albedo: the displayed colour (the texture over white).
+  proxy->GetProperty()->SetColor(1.0, 1.0, 1.0);
+  proxy->GetProperty()->SetSpecular(0.0);
+  vtkNew<vtkMatrix4x4> matrix;
+  matrix->DeepCopy(slice->GetMatrix());
+  proxy->SetUserMatrix(matrix);
+  proxy->Modified();
+  return true;
+}
+
+bool ImageSliceProxies::DisplayedExtent(vtkImageSlice* slice, vtkImageData* image, SliceExtent& e)
+{
+  // A 2D image's extent, or one slice of a 3D image across the mapper's orientation, within
+  // an image actor's display extent.
+  auto* mapper = vtkImageSliceMapper::SafeDownCast(slice->GetMapper());
+  int* extent = e.Extent;
   image->GetExtent(extent);
   int flat = -1;
   for (int a = 0; a < 3; ++a)
@@ -159,42 +182,50 @@ bool ImageSliceProxies::Build(vtkImageSlice* slice, vtkActor* proxy, std::string
       }
     }
   }
-  const int u = (flat + 1) % 3, v = (flat + 2) % 3; // the slice's axes, right-handed
-  const int nu = extent[2 * u + 1] - extent[2 * u] + 1, nv = extent[2 * v + 1] - extent[2 * v] + 1;
-  if (nu < 2 || nv < 2 || extent[2 * flat] > extent[2 * flat + 1])
-  {
-    reason = std::string(slice->GetClassName()) + " (a slice without area)";
-    return false;
-  }
+  e.Flat = flat;
+  e.U = (flat + 1) % 3; // the slice's axes, right-handed
+  e.V = (flat + 2) % 3;
+  e.NU = extent[2 * e.U + 1] - extent[2 * e.U] + 1;
+  e.NV = extent[2 * e.V + 1] - extent[2 * e.V] + 1;
+  return e.NU >= 2 && e.NV >= 2 && extent[2 * flat] <= extent[2 * flat + 1];
+}
 
-  // Texture: the slice's values in (u, v) order, coloured as VTK shows them.
+vtkSmartPointer<vtkTexture> ImageSliceProxies::Texture(
+  vtkImageSlice* slice, vtkImageData* image, const SliceExtent& e)
+{
+  // The slice's values in (u, v) order, coloured as VTK shows them.
+  vtkDataArray* scalars = image->GetPointData()->GetScalars();
   vtkSmartPointer<vtkDataArray> values;
   values.TakeReference(scalars->NewInstance());
   values->SetNumberOfComponents(scalars->GetNumberOfComponents());
-  values->SetNumberOfTuples(static_cast<vtkIdType>(nu) * nv);
+  values->SetNumberOfTuples(static_cast<vtkIdType>(e.NU) * e.NV);
   int ijk[3];
-  ijk[flat] = extent[2 * flat];
-  for (int j = 0; j < nv; ++j)
+  ijk[e.Flat] = e.Extent[2 * e.Flat];
+  for (int j = 0; j < e.NV; ++j)
   {
-    for (int i = 0; i < nu; ++i)
+    for (int i = 0; i < e.NU; ++i)
     {
-      ijk[u] = extent[2 * u] + i;
-      ijk[v] = extent[2 * v] + j;
-      values->SetTuple(static_cast<vtkIdType>(j) * nu + i, image->ComputePointId(ijk), scalars);
+      ijk[e.U] = e.Extent[2 * e.U] + i;
+      ijk[e.V] = e.Extent[2 * e.V] + j;
+      values->SetTuple(static_cast<vtkIdType>(j) * e.NU + i, image->ComputePointId(ijk), scalars);
     }
   }
   vtkNew<vtkImageData> texels;
-  texels->SetDimensions(nu, nv, 1);
+  texels->SetDimensions(e.NU, e.NV, 1);
   texels->GetPointData()->SetScalars(DisplayedColors(values, slice->GetProperty()));
-  vtkNew<vtkTexture> texture;
+  auto texture = vtkSmartPointer<vtkTexture>::New();
   texture->SetInputData(texels);
   texture->SetInterpolate(slice->GetProperty() &&
     slice->GetProperty()->GetInterpolationType() != VTK_NEAREST_INTERPOLATION);
   texture->RepeatOff();
   texture->EdgeClampOn();
+  return texture;
+}
 
-  // Quad through the first and last points' centres (VTK draws the slice so, without a
-  // border), texture coordinates on the texel centres.
+vtkSmartPointer<vtkPolyData> ImageSliceProxies::Quad(vtkImageData* image, const SliceExtent& e)
+{
+  // Through the first and last points' centres (VTK draws the slice so, without a border),
+  // texture coordinates on the texel centres.
   vtkNew<vtkPoints> points;
   vtkNew<vtkFloatArray> tcoords;
   tcoords->SetNumberOfComponents(2);
@@ -202,36 +233,23 @@ bool ImageSliceProxies::Build(vtkImageSlice* slice, vtkActor* proxy, std::string
   {
     const int cu = corner & 1, cv = corner >> 1;
     double index[3];
-    index[flat] = extent[2 * flat];
-    index[u] = extent[2 * u + cu];
-    index[v] = extent[2 * v + cv];
+    index[e.Flat] = e.Extent[2 * e.Flat];
+    index[e.U] = e.Extent[2 * e.U + cu];
+    index[e.V] = e.Extent[2 * e.V + cv];
     double xyz[3];
     image->TransformContinuousIndexToPhysicalPoint(index, xyz);
     points->InsertNextPoint(xyz);
-    const float tc[2] = { (cu ? nu - 0.5f : 0.5f) / nu, (cv ? nv - 0.5f : 0.5f) / nv };
+    const float tc[2] = { (cu ? e.NU - 0.5f : 0.5f) / e.NU, (cv ? e.NV - 0.5f : 0.5f) / e.NV };
     tcoords->InsertNextTuple(tc);
   }
-  vtkNew<vtkPolyData> quad;
+  auto quad = vtkSmartPointer<vtkPolyData>::New();
   quad->SetPoints(points);
   quad->GetPointData()->SetTCoords(tcoords);
   vtkNew<vtkCellArray> cells;
   const vtkIdType ids[4] = { 0, 1, 3, 2 };
   cells->InsertNextCell(4, ids);
   quad->SetPolys(cells);
-
-  vtkNew<vtkPolyDataMapper> quadMapper;
-  quadMapper->SetInputData(quad);
-  quadMapper->ScalarVisibilityOff();
-  proxy->SetMapper(quadMapper);
-  proxy->SetTexture(texture);
-  // Albedo: the displayed colour (the texture over white).
-  proxy->GetProperty()->SetColor(1.0, 1.0, 1.0);
-  proxy->GetProperty()->SetSpecular(0.0);
-  vtkNew<vtkMatrix4x4> matrix;
-  matrix->DeepCopy(slice->GetMatrix());
-  proxy->SetUserMatrix(matrix);
-  proxy->Modified();
-  return true;
+  return quad;
 }
 
 void ImageSliceProxies::Retain(const std::set<vtkProp*>& kept)

@@ -18,8 +18,11 @@
 #include <unordered_map>
 
 class vtkActor;
+class vtkImageData;
 class vtkImageSlice;
+class vtkPolyData;
 class vtkProp;
+class vtkTexture;
 
 namespace voxelgi
 {
@@ -30,9 +33,10 @@ public:
   /// Why the slice cannot be voxelized (empty: it can): not a vtkImageSliceMapper, or
   /// translucent.
   static std::string LeftOutReason(vtkImageSlice* slice);
-  /// The up-to-date proxy of `slice` (LeftOutReason() empty), or null with `reason` when its
-  /// displayed slice has no area or no scalars.
-  vtkActor* Update(vtkImageSlice* slice, std::string& reason);
+  /// The up-to-date proxy of `slice` (LeftOutReason() empty) whose signature the scan found
+  /// (SceneScan::PropSignature), or null with `reason` when its displayed slice has no area
+  /// or no scalars.
+  vtkActor* Update(vtkImageSlice* slice, vtkMTimeType signature, std::string& reason);
   /// Drop the proxies of slices not in `kept`.
   void Retain(const std::set<vtkProp*>& kept);
 
@@ -42,8 +46,20 @@ private:
     vtkSmartPointer<vtkActor> Actor;
     vtkMTimeType Synced = 0;
   };
+  /// The displayed slice's index extent (one flat axis) and its in-plane axes and sizes.
+  struct SliceExtent
+  {
+    int Extent[6];
+    int Flat, U, V;
+    int NU, NV;
+  };
   /// Build the quad and its texture from the slice as it is now.
   static bool Build(vtkImageSlice* slice, vtkActor* proxy, std::string& reason);
+  /// False when the displayed slice has no area.
+  static bool DisplayedExtent(vtkImageSlice* slice, vtkImageData* image, SliceExtent& extent);
+  static vtkSmartPointer<vtkTexture> Texture(
+    vtkImageSlice* slice, vtkImageData* image, const SliceExtent& extent);
+  static vtkSmartPointer<vtkPolyData> Quad(vtkImageData* image, const SliceExtent& extent);
 
   std::unordered_map<vtkImageSlice*, Proxy> Proxies;
 };

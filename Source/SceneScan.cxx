@@ -346,7 +346,7 @@ bool SceneScan::Collect(vtkRenderer* renderer, std::vector<ActorRecord>& records
     if (auto* slice = vtkImageSlice::SafeDownCast(prop))
     {
       std::string why;
-      actor = this->Slices.Update(slice, why);
+      actor = this->Slices.Update(slice, signature, why);
       slices.insert(slice);
       if (!actor)
       {
