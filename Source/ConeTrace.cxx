@@ -26,10 +26,8 @@ namespace
 constexpr int Tile = 8; // cone_trace.comp's local size
 }
 
-ConeTrace::ConeTrace(const GBufferPass& gbuffer, const LightVoxels& lighting, const VoxelMipmap& mipmap)
+ConeTrace::ConeTrace(const GBufferPass& gbuffer)
   : GBuffer(gbuffer)
-  , Lighting(lighting)
-  , Mipmap(mipmap)
 {
 }
 
@@ -132,7 +130,7 @@ void ConeTrace::Run(const Frame& frame)
   p.Use(frame.Window);
   SamplerBindings samplers(frame.Window);
   SetConeTracingSamplers(
-    p, samplers, this->Lighting.GetRadiance(), this->Mipmap, 0.0f, this->Cones.StepFactor);
+    p, samplers, frame.Lighting->GetRadiance(), *frame.Mipmap, 0.0f, this->Cones.StepFactor);
   ScopedTextures inputs({ this->GBuffer.GetNormal(), this->GBuffer.GetMaterial(),
     this->GBuffer.GetDepth(), before.Indirect, before.Shadowed, before.Surface });
   this->HistoryValid = false;

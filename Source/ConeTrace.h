@@ -28,13 +28,11 @@ namespace voxelgi
 {
 struct Frame;
 class GBufferPass;
-class LightVoxels;
-class VoxelMipmap;
 
 class ConeTrace
 {
 public:
-  ConeTrace(const GBufferPass& gbuffer, const LightVoxels& lighting, const VoxelMipmap& mipmap);
+  explicit ConeTrace(const GBufferPass& gbuffer);
 
   /// Size the traced images for the frame's viewport and trace resolution; build the program.
   bool Prepare(const Frame& frame, std::string& error);
@@ -62,8 +60,6 @@ private:
   void SetHistoryUniforms(const Frame& frame, bool reuse);
 
   const GBufferPass& GBuffer;
-  const LightVoxels& Lighting;
-  const VoxelMipmap& Mipmap;
   ConeSettings Cones;
   ComputeProgram Program;
   std::array<TraceImages, 2> History; // this frame's and the previous frame's

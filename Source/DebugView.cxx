@@ -15,12 +15,6 @@
 namespace voxelgi
 {
 
-DebugView::DebugView(const VoxelizePass& voxels, const LightVoxels& lighting)
-  : Voxels(voxels)
-  , Lighting(lighting)
-{
-}
-
 bool DebugView::Prepare(const Frame& frame, std::string& error)
 {
   if (!this->Image)
@@ -35,8 +29,8 @@ void DebugView::Run(const Frame& frame)
 {
   ComputeProgram& p = this->Program;
   p.Use(frame.Window);
-  const VoxelizePass& voxels = this->Voxels;
-  const Volume3D& radiance = this->Lighting.GetRadiance();
+  const VoxelizePass& voxels = *frame.Voxelization;
+  const Volume3D& radiance = frame.Lighting->GetRadiance();
   float columnMajor[16];
   GridFromNDC(frame.Renderer, frame.Grid, columnMajor);
 

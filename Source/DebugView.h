@@ -1,7 +1,8 @@
 /**
  * DebugView stage (debug_view.comp, a compute dispatch in 8x8 tiles): the voxel volumes as an
  * RGBA8 image of the viewport, seen through the renderer's camera, so a user can check what
- * was voxelized (albedo, normal, emission) and how it is lit (radiance). Present draws it.
+ * was voxelized (albedo, normal, emission) and how it is lit (radiance): the frame's volumes
+ * (Frame::Voxelization, Frame::Lighting). Present draws it.
  */
 #ifndef VoxelGIDebugView_h
 #define VoxelGIDebugView_h
@@ -18,14 +19,10 @@ class vtkWindow;
 namespace voxelgi
 {
 struct Frame;
-class LightVoxels;
-class VoxelizePass;
 
 class DebugView
 {
 public:
-  DebugView(const VoxelizePass& voxels, const LightVoxels& lighting);
-
   /// Size the image for the frame's viewport; build the program.
   bool Prepare(const Frame& frame, std::string& error);
   /// Render the frame's voxel debug view into the image.
@@ -34,8 +31,6 @@ public:
   void ReleaseGraphicsResources(vtkWindow* window);
 
 private:
-  const VoxelizePass& Voxels;
-  const LightVoxels& Lighting;
   ComputeProgram Program;
   vtkSmartPointer<vtkTextureObject> Image;
 };

@@ -23,6 +23,9 @@ class vtkVoxelGIPass;
 
 namespace voxelgi
 {
+class LightVoxels;
+class VoxelMipmap;
+class VoxelizePass;
 
 /// The pass's settings as the stages read them (see vtkVoxelGIPass.h for their meaning).
 struct Settings
@@ -117,6 +120,11 @@ struct Frame
   const std::vector<ActorRecord>* Actors = nullptr;
   /// The grid of the current voxels.
   VoxelGrid Grid;
+  /// The volumes the trace and the debug view read: the pass's own, or those of the pass
+  /// whose voxels it shares (vtkVoxelGIPass::SetVoxelSource).
+  const VoxelizePass* Voxelization = nullptr;
+  const LightVoxels* Lighting = nullptr;
+  const VoxelMipmap* Mipmap = nullptr;
   /// Whether the renderer has lights GI uses (else lit surfaces show only their ambient term).
   bool LitScene = true;
   /// Whether any voxelized actor is specular (else no specular cone).

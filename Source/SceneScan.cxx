@@ -171,6 +171,26 @@ std::string LeftOutReason(vtkProp* prop)
   return std::string();
 }
 
+/// Whether VTK draws lines for the prop (wireframe, edges, line cells, 3D text and axes):
+/// what a multisampled window anti-aliases most visibly.
+bool DrawsLines(vtkProp* prop)
+{
+  if (prop->IsA("vtkTextActor3D") || prop->IsA("vtkCubeAxesActor") ||
+    prop->IsA("vtkPolarAxesActor") || prop->IsA("vtkAxesActor"))
+  {
+    return true;
+  }
+  vtkActor* actor = vtkActor::SafeDownCast(prop);
+  if (!actor || !actor->GetMapper())
+  {
+    return false;
+  }
+  vtkProperty* property = actor->GetProperty();
+  auto* poly = vtkPolyData::SafeDownCast(actor->GetMapper()->GetInputDataObject(0, 0));
+  return property->GetRepresentation() == VTK_WIREFRAME || property->GetEdgeVisibility() ||
+    (poly && poly->GetNumberOfLines() > 0);
+}
+
 void Merge(double bounds[6], const double* b, bool first)
 {
   for (int i = 0; i < 3; ++i)
@@ -308,6 +328,7 @@ bool SceneScan::Collect(vtkRenderer* renderer, std::vector<ActorRecord>& records
   std::map<std::string, int> leftOut; // visible 3D props VTK renders without GI, by reason
   std::set<vtkProp*> slices;          // image slices voxelized through proxies
   bool anySpecular = false;
+  bool anyLines = false;
   vtkPropCollection* props = renderer->GetViewProps();
   this->PropSignatures.clear();
   vtkCollectionSimpleIterator it;
@@ -328,6 +349,7 @@ bool SceneScan::Collect(vtkRenderer* renderer, std::vector<ActorRecord>& records
     {
       continue;
     }
+    anyLines = anyLines || DrawsLines(prop);
     const std::string reason = LeftOutReason(prop);
     if (!reason.empty())
     {
@@ -378,6 +400,7 @@ bool SceneScan::Collect(vtkRenderer* renderer, std::vector<ActorRecord>& records
   this->Slices.Retain(slices);
   this->ReportLeftOut(leftOut, warnings);
   this->AnySpecular = anySpecular;
+  this->AnyLines = anyLines;
   return !records.empty();
 }
 
@@ -540,6 +563,7 @@ void SceneScan::Reset()
   this->Pending.clear();
   this->Voxelized = false;
   this->BuiltGrid = VoxelGrid();
+  this->PropSignatures.clear();
 }
 
 void SceneScan::RefreshSignatures()

@@ -63,15 +63,21 @@ struct vtkVoxelGIPass::Internals
   voxelgi::VoxelMipmap Mipmap{ Lighting };
   voxelgi::VoxelBounce Bounce{ *Voxelize, Lighting, Mipmap };
   vtkNew<voxelgi::GBufferPass> GBuffer;
-  voxelgi::ConeTrace Trace{ *GBuffer, Lighting, Mipmap };
+  voxelgi::ConeTrace Trace{ *GBuffer };
   voxelgi::Composite Compositor{ *GBuffer, Trace };
-  voxelgi::DebugView Debug{ *Voxelize, Lighting };
+  voxelgi::DebugView Debug;
   voxelgi::Present Presenter;
   voxelgi::StageClock Clock;
   voxelgi::Frame Frame;
 
   bool Traced = false;
   vtkMTimeType TracedSettings = 0; // the settings' time at the last trace
+  // Counts the frames that rewrote the voxels or their light in a way a trace cannot reuse;
+  // a pass sharing these voxels compares it with the count it last traced.
+  unsigned long long RadianceGeneration = 0;
+  unsigned long long TracedGeneration = 0;
+  bool WarnedSource = false;
+  bool WarnedAliasing = false;
   bool WarnedUnlit = false;
   bool WarnedNoDelegate = false;
   vtkWeakPointer<vtkOpenGLRenderWindow> Window; // the window whose context holds the resources
@@ -121,6 +127,7 @@ vtkVoxelGIPass::~vtkVoxelGIPass()
 {
   this->WatchWindow(nullptr);
   this->SetDelegatePass(nullptr);
+  this->SetVoxelSource(nullptr);
 }
 
 //------------------------------------------------------------------------------
@@ -149,6 +156,21 @@ void vtkVoxelGIPass::WatchWindow(vtkOpenGLRenderWindow* window)
 void vtkVoxelGIPass::WindowDeleted()
 {
   this->WatchWindow(nullptr);
+}
+
+//------------------------------------------------------------------------------
+void vtkVoxelGIPass::SetVoxelSource(vtkVoxelGIPass* source)
+{
+  // A source owns its voxels: no chains, hence no cycles of references.
+  if (source && (source == this || source->VoxelSource))
+  {
+    vtkErrorMacro(<< "SetVoxelSource: "
+                  << (source == this ? "a pass cannot share its own voxels"
+                                     : "that pass shares another pass's voxels itself")
+                  << "; the voxel source is left unchanged.");
+    return;
+  }
+  vtkSetObjectBodyMacro(VoxelSource, vtkVoxelGIPass, source);
 }
 
 //------------------------------------------------------------------------------
@@ -220,22 +242,27 @@ const char* vtkVoxelGIPass::GetStageName(int stage)
   return (stage >= 0 && stage < NUMBER_OF_STAGES) ? names[stage] : "Unknown";
 }
 
+const vtkVoxelGIPass* vtkVoxelGIPass::VoxelOwner() const
+{
+  return this->VoxelSource ? this->VoxelSource : this;
+}
+
 int vtkVoxelGIPass::GetGridResolution() const
 {
-  return this->Internal->Scan.GetGrid().Resolution;
+  return this->VoxelOwner()->Internal->Scan.GetGrid().Resolution;
 }
 
 void vtkVoxelGIPass::GetGridOrigin(double origin[3]) const
 {
   for (int a = 0; a < 3; ++a)
   {
-    origin[a] = this->Internal->Scan.GetGrid().Origin[a];
+    origin[a] = this->VoxelOwner()->Internal->Scan.GetGrid().Origin[a];
   }
 }
 
 double vtkVoxelGIPass::GetGridVoxelSize() const
 {
-  return this->Internal->Scan.GetGrid().VoxelSize;
+  return this->VoxelOwner()->Internal->Scan.GetGrid().VoxelSize;
 }
 
 bool vtkVoxelGIPass::GetUsedHardwareConservativeRaster() const
@@ -332,6 +359,9 @@ void vtkVoxelGIPass::BeginFrame(const vtkRenderState* s)
   frame.Clock = &in.Clock;
   frame.Grid = in.Scan.GetGrid();
   frame.Actors = &in.Scan.GetRecords();
+  frame.Voxelization = in.Voxelize;
+  frame.Lighting = &in.Lighting;
+  frame.Mipmap = &in.Mipmap;
   frame.Renderer->GetTiledSizeAndOrigin(&frame.Width, &frame.Height, &frame.X, &frame.Y);
   frame.Config = voxelgi::Snapshot(this, in.HasConservativeRaster);
 }
@@ -427,7 +457,7 @@ bool vtkVoxelGIPass::ServeRenderer(vtkRenderer* renderer)
     {
       vtkErrorMacro(<< "This pass is set on two renderers of one window; it renders GI for the "
                        "first only and VTK's image for the other. Give each renderer a pass of "
-                       "its own.");
+                       "its own (SetVoxelSource lets them share one voxel grid).");
       in.WarnedShared = true;
     }
     return false;
@@ -526,8 +556,16 @@ void vtkVoxelGIPass::Render(const vtkRenderState* s)
   {
     this->WatchWindow(renWin);
     this->BeginFrame(s);
-    this->GIActive = this->ViewportFits() && this->UpdateVoxels(voxelsChanged) &&
-      this->UpdateRadiance(voxelsChanged, radianceChanged);
+    if (this->VoxelSource)
+    {
+      this->GIActive = this->ViewportFits() && this->FollowSource(radianceChanged);
+    }
+    else
+    {
+      this->GIActive = this->ViewportFits() && this->UpdateVoxels(voxelsChanged) &&
+        this->UpdateRadiance(voxelsChanged, radianceChanged);
+      in.RadianceGeneration += (voxelsChanged || radianceChanged) ? 1 : 0;
+    }
   }
 
   const bool voxelView = this->DebugView >= DEBUG_VIEW_VOXEL_ALBEDO &&
@@ -542,7 +580,7 @@ void vtkVoxelGIPass::Render(const vtkRenderState* s)
     const bool unchanged = in.Scan.Unchanged(renderer, this->GetMTime());
     in.Frame.CameraOnly = traced && !voxelsChanged && !radianceChanged &&
       this->GetMTime() == in.TracedSettings;
-    this->RenderGI(in.Frame.CameraOnly && unchanged);
+      this->RenderGI(in.Frame.CameraOnly && unchanged);
     in.Scan.RememberFrame(renderer, this->GetMTime());
   }
   if (this->GIActive && voxelView)
@@ -580,6 +618,7 @@ bool vtkVoxelGIPass::UpdateVoxels(bool& changed)
     vtkErrorMacro(<< messages.Error);
   }
   frame.AnySpecular = in.Scan.GetAnySpecular();
+  this->NoticeAliasing();
   changed = false;
   if (!ok)
   {
@@ -614,31 +653,38 @@ bool vtkVoxelGIPass::UpdateVoxels(bool& changed)
   return true;
 }
 
+void vtkVoxelGIPass::NoticeAliasing()
+{
+  Internals& in = *this->Internal;
+  const int windowSamples = in.Frame.Window->GetMultiSamples();
+  if (in.WarnedAliasing || windowSamples < 2 || this->GBufferSamples > 1 ||
+    !in.Scan.GetAnyLines())
+  {
+    return;
+  }
+  vtkWarningMacro(<< "The window is multisampled (" << windowSamples
+                  << " samples) but the GI G-buffer has one sample (GBufferSamples "
+                  << this->GBufferSamples
+                  << "): lines, edges and 3D text that VTK anti-aliases are drawn aliased. "
+                     "SetGBufferSamples("
+                  << windowSamples
+                  << ") keeps them anti-aliased, at the cost of drawing the G-buffer with as "
+                     "many samples.");
+  in.WarnedAliasing = true;
+}
+
 //------------------------------------------------------------------------------
 bool vtkVoxelGIPass::UpdateRadiance(bool voxelsChanged, bool& changed)
 {
   Internals& in = *this->Internal;
   voxelgi::Frame& frame = in.Frame;
-  std::vector<std::string> warnings;
-  const bool lightsChanged = in.Lights.Gather(frame.Renderer, frame.Grid, warnings);
-  for (const std::string& warning : warnings)
-  {
-    vtkWarningMacro(<< warning);
-  }
-  frame.LitScene = in.Lights.GetCount() > 0;
+  bool lightsChanged = false;
   changed = false;
-  if (!frame.LitScene && !in.Voxelize->HasEmission())
+  if (!this->GatherLights(in.Voxelize->HasEmission(), lightsChanged))
   {
-    if (!in.WarnedUnlit)
-    {
-      vtkWarningMacro(<< "The scene has no light and no emissive prop: nothing to illuminate, "
-                         "rendering without GI.");
-      in.WarnedUnlit = true;
-    }
     in.Lighting.SetCurrent(frame, false);
     return false;
   }
-  in.Lights.Bind();
   in.GridBlock.Bind(frame.Grid);
   // Camera-following lights turn with every camera move: their voxel light is kept until
   // they have turned by more than CameraLightTurn (VTK's own direct light stays exact).
@@ -661,6 +707,86 @@ bool vtkVoxelGIPass::UpdateRadiance(bool voxelsChanged, bool& changed)
   return valid;
 }
 
+bool vtkVoxelGIPass::GatherLights(bool emission, bool& changed)
+{
+  Internals& in = *this->Internal;
+  voxelgi::Frame& frame = in.Frame;
+  std::vector<std::string> warnings;
+  changed = in.Lights.Gather(frame.Renderer, frame.Grid, warnings);
+  for (const std::string& warning : warnings)
+  {
+    vtkWarningMacro(<< warning);
+  }
+  frame.LitScene = in.Lights.GetCount() > 0;
+  if (!frame.LitScene && !emission)
+  {
+    if (!in.WarnedUnlit)
+    {
+      vtkWarningMacro(<< "The scene has no light and no emissive prop: nothing to illuminate, "
+                         "rendering without GI.");
+      in.WarnedUnlit = true;
+    }
+    return false;
+  }
+  in.Lights.Bind();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkVoxelGIPass::FollowSource(bool& changed)
+{
+  Internals& in = *this->Internal;
+  voxelgi::Frame& frame = in.Frame;
+  changed = false;
+  const vtkVoxelGIPass* source = this->VoxelSource;
+  const Internals& shared = *source->Internal;
+  const char* error = source->VoxelSource
+    ? "its VoxelSource shares another pass's voxels itself"
+    : (shared.Window && shared.Window != in.Window
+          ? "its VoxelSource renders into another window (voxels stay in their window's context)"
+          : nullptr);
+  if (error)
+  {
+    if (!in.WarnedSource)
+    {
+      vtkErrorMacro(<< "Voxel GI cannot run: " << error << ". Rendering without GI.");
+      in.WarnedSource = true;
+    }
+    return false;
+  }
+  in.WarnedSource = false;
+  // Voxels of the pass's own from before it shared the source's are not needed any more.
+  if (in.Scan.GetGrid().Resolution > 0)
+  {
+    this->ReleaseVoxelStages(in.Window);
+    in.Scan.Reset();
+  }
+  // The source says why when it has no GI; before its first frame there is nothing to trace.
+  if (!source->GIActive || !shared.Window)
+  {
+    return false;
+  }
+  frame.Grid = shared.Scan.GetGrid();
+  frame.AnySpecular = shared.Scan.GetAnySpecular();
+  frame.Voxelization = shared.Voxelize;
+  frame.Lighting = &shared.Lighting;
+  frame.Mipmap = &shared.Mipmap;
+  bool lightsChanged = false;
+  if (!this->GatherLights(shared.Voxelize->HasEmission(), lightsChanged))
+  {
+    return false;
+  }
+  in.GridBlock.Bind(frame.Grid);
+  // This renderer's lights shade VTK's image and aim the shadow cones; the voxels are lit by
+  // the source's. Camera lights turning with this camera make a camera move.
+  changed = shared.RadianceGeneration != in.TracedGeneration ||
+    (lightsChanged && !std::isfinite(in.Lights.CameraTurnSinceLit()));
+  in.Lights.MarkLit();
+  in.TracedGeneration = shared.RadianceGeneration;
+  return true;
+}
+
+//------------------------------------------------------------------------------
 bool vtkVoxelGIPass::LightAndBounce(bool follow)
 {
   Internals& in = *this->Internal;
@@ -780,6 +906,10 @@ bool vtkVoxelGIPass::GetFloatImage(int image, vtkFloatArray* pixels)
 //------------------------------------------------------------------------------
 bool vtkVoxelGIPass::GetVoxelVolume(int volume, vtkImageData* image)
 {
+  if (this->VoxelSource)
+  {
+    return this->VoxelSource->GetVoxelVolume(volume, image);
+  }
   Internals& in = *this->Internal;
   const voxelgi::VoxelizePass& voxels = *in.Voxelize;
   const int res = voxels.GetResolution();
@@ -807,22 +937,28 @@ void vtkVoxelGIPass::ReleaseGraphicsResources(vtkWindow* w)
   }
 }
 
-void vtkVoxelGIPass::ReleaseStages(vtkWindow* w)
+void vtkVoxelGIPass::ReleaseVoxelStages(vtkWindow* w)
 {
   Internals& in = *this->Internal;
   in.Voxelize->ReleaseGraphicsResources(w);
-  in.GridBlock.ReleaseGraphicsResources(w);
-  in.Lights.ReleaseGraphicsResources(w);
   in.Shadows.ReleaseGraphicsResources(w);
   in.Lighting.ReleaseGraphicsResources(w);
   in.Mipmap.ReleaseGraphicsResources(w);
   in.Bounce.ReleaseGraphicsResources(w);
+  in.FittingBytes = 0;
+}
+
+void vtkVoxelGIPass::ReleaseStages(vtkWindow* w)
+{
+  Internals& in = *this->Internal;
+  this->ReleaseVoxelStages(w);
+  in.GridBlock.ReleaseGraphicsResources(w);
+  in.Lights.ReleaseGraphicsResources(w);
   in.GBuffer->ReleaseGraphicsResources(w);
   in.Trace.ReleaseGraphicsResources(w);
   in.Compositor.ReleaseGraphicsResources(w);
   in.Debug.ReleaseGraphicsResources(w);
   in.Presenter.ReleaseGraphicsResources(w);
-  in.FittingBytes = 0;
 }
 
 //------------------------------------------------------------------------------
@@ -844,8 +980,9 @@ void vtkVoxelGIPass::PrintSelf(ostream& os, vtkIndent indent)
     const char* name = vtkVoxelGISettings::GetName(i);
     os << indent << name << ": " << vtkVoxelGISettings::GetValue(this, name) << "\n";
   }
+  os << indent << "VoxelSource: " << static_cast<void*>(this->VoxelSource) << "\n";
   os << indent << "GIActive: " << this->GIActive << "\n";
-  const voxelgi::VoxelGrid& grid = this->Internal->Scan.GetGrid();
+  const voxelgi::VoxelGrid& grid = this->VoxelOwner()->Internal->Scan.GetGrid();
   os << indent << "Grid: " << grid.Resolution << "^3 voxels of " << grid.VoxelSize << " from ("
      << grid.Origin.x << ", " << grid.Origin.y << ", " << grid.Origin.z << ")\n";
   os << indent << "VoxelMemoryBytes: " << this->GetVoxelMemoryBytes() << "\n";

@@ -103,6 +103,23 @@ public:
 
   ///@{
   /**
+   * Share the voxel grid of another pass (set on another renderer of the same window, e.g.
+   * another viewport on the same props): this pass then scans, voxelizes, lights and bounces
+   * nothing and allocates no voxel volume; it traces the source's voxels for its own
+   * renderer's G-buffer, with its own cone, trace and debug-view settings. The voxel settings
+   * (resolution, padding, update policy, light occlusion, bounces, mipmaps) and the lights
+   * that light the voxels are the source's; this renderer's lights shade VTK's image and aim
+   * the shadow cones. The source's renderer should render first (added to the window first,
+   * or on a lower layer); otherwise this pass traces the voxels of the source's last frame.
+   * The source must own its voxels (no chains) and render into the same window; otherwise
+   * this pass says so once and renders VTK's image. nullptr (default): own voxels.
+   */
+  virtual void SetVoxelSource(vtkVoxelGIPass* source);
+  vtkGetObjectMacro(VoxelSource, vtkVoxelGIPass);
+  ///@}
+
+  ///@{
+  /**
    * Turn global illumination on or off. Off renders exactly what the delegate renders and
    * does no voxel work. Default: on.
    */
@@ -599,6 +616,17 @@ protected:
   /// Gather the lights; when voxels, lights or settings changed: LightVoxels, Mipmap,
   /// Bounce. False when GI cannot run (nothing lights the scene).
   bool UpdateRadiance(bool voxelsChanged, bool& changed);
+  /// Say once when the window anti-aliases lines the one-sample G-buffer draws aliased.
+  void NoticeAliasing();
+  /// Gather the renderer's lights into the light block; false (said once) when neither they
+  /// nor `emission` light anything. `changed`: the lights differ from the last frame's.
+  bool GatherLights(bool emission, bool& changed);
+  /// Trace the VoxelSource's voxels: false (said once where it is this pass's fault) when they
+  /// cannot be used. `changed`: they or this renderer's lights changed in a way that a trace
+  /// cannot reuse.
+  bool FollowSource(bool& changed);
+  /// The pass whose voxels this one traces: the VoxelSource, or this pass.
+  const vtkVoxelGIPass* VoxelOwner() const;
   /// Light the voxels and bounce; `follow`: only camera lights turned since the last time.
   bool LightAndBounce(bool follow);
   /// GBuffer, ConeTrace and Composite (unless `reuse`: nothing changed since the last traced
@@ -608,10 +636,13 @@ protected:
   bool TraceFrame();
   /// Free the GL resources of every stage (not the delegate's).
   void ReleaseStages(vtkWindow* w);
+  /// Free the voxel volumes and the stages that fill them.
+  void ReleaseVoxelStages(vtkWindow* w);
   /// A voxel debug view over VTK's image.
   void RenderVoxelView();
 
   vtkRenderPass* DelegatePass = nullptr;
+  vtkVoxelGIPass* VoxelSource = nullptr;
   // Settings: defaults (and ranges) from the settings table, Source/VoxelGISettings.json.
   vtkTypeBool Enabled{};
   int VoxelResolution{};

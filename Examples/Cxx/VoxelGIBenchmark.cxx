@@ -3,7 +3,8 @@
 //   VoxelGIBenchmark [--scene cornell|field|atrium|sphere] [--objects N] [--triangles N]
 //                    [--size WxH] [--resolution R] [--frames F] [--warmup W] [--trace-scale S]
 //                    [--multisamples N] [--egl] [--temporal-reuse 0|1] [--bounces N]
-//                    [--update-interval N] [--set SETTING=VALUE ...]
+//                    [--update-interval N] [--viewports N] [--shared-grid 0|1]
+//                    [--set SETTING=VALUE ...]
 //                    [--sequences NAME,NAME,...] [--csv FILE] [--json FILE] [--image FILE]
 //
 // Scenes: the Cornell box (36 triangles), a field of N spheres and boxes on a ground plane
@@ -19,6 +20,10 @@
 // whose frames differ in kind, as the headlight orbit's relights, is judged by it). --set sets any setting of the
 // settings table (vtkVoxelGISettings), e.g. --set DiffuseConeCount=16; the JSON lists them. Each sequence runs twice: with
 // the stage timers for the stage times, then without them for the frame, CPU and span.
+// --viewports N tiles the window with N renderers showing the same props, each camera turned
+// by 10 degrees from the last, each with a pass of the same settings; with --shared-grid 1 the
+// others share the first pass's voxel grid (vtkVoxelGIPass::SetVoxelSource). Camera
+// sequences move every camera; stage times are the first pass's.
 #include "vtkVoxelGIEGLRenderWindow.h"
 #include "vtkVoxelGIPass.h"
 #include "vtkVoxelGIScenes.h"
@@ -53,6 +58,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <functional>
@@ -80,6 +86,8 @@ struct Options
   int Bounces = -1;        // -1: the default
   int UpdateInterval = 0;  // > 0: revoxelize every N frames (UpdatePolicy EveryNFrames)
   int MultiSamples = -1; // -1: VTK's default
+  int Viewports = 1;
+  bool SharedGrid = false;
   bool EGL = false;
   std::string CSV = "voxelgi-benchmark.csv";
   std::string JSON = "voxelgi-benchmark.json";
@@ -295,6 +303,8 @@ bool Parse(int argc, char* argv[], Options& o)
     else if (arg == "--bounces") o.Bounces = std::atoi(next().c_str());
     else if (arg == "--update-interval") o.UpdateInterval = std::atoi(next().c_str());
     else if (arg == "--sequences") o.Sequences = next();
+    else if (arg == "--viewports") o.Viewports = std::atoi(next().c_str());
+    else if (arg == "--shared-grid") o.SharedGrid = std::atoi(next().c_str()) != 0;
     else if (arg == "--size")
     {
       const std::string v = next();
@@ -324,7 +334,7 @@ bool Parse(int argc, char* argv[], Options& o)
       return false;
     }
   }
-  return o.Width > 0 && o.Height > 0 && o.Frames > 0 &&
+  return o.Width > 0 && o.Height > 0 && o.Frames > 0 && o.Viewports >= 1 && o.Viewports <= 16 &&
     (o.Scene == "cornell" || o.Scene == "field" || o.Scene == "atrium" || o.Scene == "sphere");
 }
 }
@@ -337,7 +347,7 @@ int main(int argc, char* argv[])
     std::cerr << "usage: VoxelGIBenchmark [--scene cornell|field|atrium|sphere] [--objects N] "
                  "[--triangles N] [--size WxH] [--resolution R] [--frames F] [--warmup W] "
                  "[--trace-scale S] [--multisamples N] [--egl] [--temporal-reuse 0|1] "
-                 "[--bounces N] [--update-interval N] "
+                 "[--bounces N] [--update-interval N] [--viewports N] [--shared-grid 0|1] "
                  "[--sequences NAME,...] [--csv FILE] [--json FILE] [--image FILE]"
               << std::endl;
     return EXIT_FAILURE;
@@ -418,6 +428,56 @@ int main(int argc, char* argv[])
     gi->SetUpdateInterval(o.UpdateInterval);
   }
   renderer->SetPass(gi);
+  // More viewports on the same props and lights, each with a pass of the same settings.
+  std::vector<vtkSmartPointer<vtkRenderer>> renderers{ renderer.GetPointer() };
+  std::vector<vtkSmartPointer<vtkVoxelGIPass>> passes{ gi.GetPointer() };
+  const int columns = static_cast<int>(std::ceil(std::sqrt(o.Viewports)));
+  const int rows = (o.Viewports + columns - 1) / columns;
+  for (int i = 0; i < o.Viewports; ++i)
+  {
+    if (i > 0)
+    {
+      auto view = vtkSmartPointer<vtkRenderer>::New();
+      vtkCollectionSimpleIterator pit;
+      renderer->GetViewProps()->InitTraversal(pit);
+      while (vtkProp* prop = renderer->GetViewProps()->GetNextProp(pit))
+      {
+        view->AddViewProp(prop);
+      }
+      vtkCollectionSimpleIterator lit;
+      renderer->GetLights()->InitTraversal(lit);
+      while (vtkLight* l = renderer->GetLights()->GetNextLight(lit))
+      {
+        view->AddLight(l);
+      }
+      view->GetActiveCamera()->DeepCopy(renderer->GetActiveCamera());
+      view->GetActiveCamera()->Azimuth(10.0 * i);
+      view->ResetCameraClippingRange();
+      auto pass = vtkSmartPointer<vtkVoxelGIPass>::New();
+      for (int k = 0; k < vtkVoxelGISettings::GetNumberOfSettings(); ++k)
+      {
+        const char* name = vtkVoxelGISettings::GetName(k);
+        vtkVoxelGISettings::SetValue(pass, name, vtkVoxelGISettings::GetValue(gi, name));
+      }
+      if (o.SharedGrid)
+      {
+        pass->SetVoxelSource(gi);
+      }
+      view->SetPass(pass);
+      window->AddRenderer(view);
+      renderers.push_back(view);
+      passes.push_back(pass);
+    }
+    const double x = static_cast<double>(i % columns) / columns;
+    const double y = static_cast<double>(i / columns) / rows;
+    renderers[i]->SetViewport(x, y, x + 1.0 / columns, y + 1.0 / rows);
+  }
+  const auto orbit = [&renderers]() {
+    for (vtkRenderer* view : renderers)
+    {
+      view->GetActiveCamera()->Azimuth(2.0);
+    }
+  };
 
   if (!o.Image.empty())
   {
@@ -448,21 +508,24 @@ int main(int argc, char* argv[])
     {
       l->SetSwitch(l == headlight.GetPointer() || !on);
     }
-    if (on)
+    for (vtkRenderer* view : renderers)
     {
-      renderer->AddLight(headlight);
-    }
-    else
-    {
-      renderer->RemoveLight(headlight);
+      if (on)
+      {
+        view->AddLight(headlight);
+      }
+      else
+      {
+        view->RemoveLight(headlight);
+      }
     }
   };
   double lightBase[3];
   light->GetPosition(lightBase);
   const std::vector<Sequence> sequences = {
     { "static", [](int) {}, true },
-    { "orbit", [&](int) { renderer->GetActiveCamera()->Azimuth(2.0); }, true },
-    { "headlight-orbit", [&](int) { renderer->GetActiveCamera()->Azimuth(2.0); }, true,
+    { "orbit", [&](int) { orbit(); }, true },
+    { "headlight-orbit", [&](int) { orbit(); }, true,
       useHeadlight },
     { "light",
       [&](int f) { light->SetPosition(lightBase[0] + 0.3 * std::sin(0.3 * f), lightBase[1],
@@ -507,11 +570,18 @@ int main(int argc, char* argv[])
   std::map<std::string, std::vector<std::vector<double>>> samples; // per sequence: columns
   // Every run starts from the same view, so that sequences that move the camera (the orbit
   // under scene lights and under the headlight) cover the same views.
-  vtkNew<vtkCamera> start;
-  start->DeepCopy(renderer->GetActiveCamera());
+  std::vector<vtkSmartPointer<vtkCamera>> starts;
+  for (vtkRenderer* view : renderers)
+  {
+    starts.push_back(vtkSmartPointer<vtkCamera>::New());
+    starts.back()->DeepCopy(view->GetActiveCamera());
+  }
   for (const Sequence* sequence : selected)
   {
-    gi->SetEnabled(sequence->GI);
+    for (vtkVoxelGIPass* pass : passes)
+    {
+      pass->SetEnabled(sequence->GI);
+    }
     sequence->Setup(true);
     auto& columns = samples[sequence->Name];
     columns.assign(vtkVoxelGIPass::NUMBER_OF_STAGES + Measured, {});
@@ -520,7 +590,10 @@ int main(int argc, char* argv[])
     for (const bool timed : { true, false })
     {
       gi->SetTimeStages(timed);
-      renderer->GetActiveCamera()->DeepCopy(start);
+      for (std::size_t v = 0; v < renderers.size(); ++v)
+      {
+        renderers[v]->GetActiveCamera()->DeepCopy(starts[v]);
+      }
       for (int f = -o.Warmup; f < o.Frames; ++f)
       {
         sequence->Step(f);
@@ -572,6 +645,11 @@ int main(int argc, char* argv[])
     sequence->Setup(false);
   }
   glDeleteQueries(2, spanQueries);
+  unsigned long long voxelBytes = 0;
+  for (vtkVoxelGIPass* pass : passes)
+  {
+    voxelBytes += pass->GetVoxelMemoryBytes();
+  }
 
   std::ofstream json(o.JSON);
   json << "{\n  \"scene\": \"" << o.Scene << "\", \"actors\": " << actors.size()
@@ -580,7 +658,9 @@ int main(int argc, char* argv[])
        << ", \"trace_scale\": " << o.TraceScale << ", \"temporal_reuse\": " << o.TemporalReuse
        << ", \"multisamples\": " << window->GetMultiSamples() << ", \"bounces\": "
        << gi->GetBounces() << ", \"update_interval\": " << o.UpdateInterval
-       << ", \"frames\": " << o.Frames << ", \"settings\": {";
+       << ", \"frames\": " << o.Frames << ", \"viewports\": " << o.Viewports
+       << ", \"shared_grid\": " << (o.SharedGrid ? "true" : "false")
+       << ", \"voxel_memory_bytes\": " << voxelBytes << ", \"settings\": {";
   for (size_t i = 0; i < o.Settings.size(); ++i)
   {
     json << (i ? ", " : "") << "\"" << o.Settings[i].first << "\": " << o.Settings[i].second;
@@ -590,7 +670,9 @@ int main(int argc, char* argv[])
             << ", " << o.Scene << " (" << actors.size() << " actors, " << triangles
             << " triangles) " << o.Width << "x" << o.Height << ", " << o.Resolution
             << "^3 voxels, trace at " << o.TraceScale << ", " << window->GetMultiSamples()
-            << "x MSAA, " << o.Frames << " frames\n"
+            << "x MSAA, " << o.Frames << " frames, " << o.Viewports << " viewport(s)"
+            << (o.SharedGrid ? " sharing one grid" : "") << ", voxel memory "
+            << voxelBytes / (1024 * 1024) << " MiB\n"
             << std::setw(16) << "sequence" << std::setw(10) << "mean" << std::setw(10) << "frame" << std::setw(10) << "cpu"
             << std::setw(10) << "gpu span";
   for (int s = 0; s < vtkVoxelGIPass::NUMBER_OF_STAGES; ++s)

@@ -821,6 +821,57 @@ const std::map<std::string, std::function<int()>>& Cases()
         VOXELGI_CHECK(s.GI->GetGIActive(), "GI did not resume after the pick");
         return EXIT_SUCCESS;
       } },
+    { "VoxelSourceRefused",
+      [] {
+        // Sharing voxels: not with itself, not through a chain, not across windows (one
+        // message, VTK's image), and silently VTK's image while the source has no GI.
+        Scene s;
+        vtkVoxelGIScenes::AddCornellBox(s.Renderer);
+        s.GI->SetVoxelSource(s.GI);
+        VOXELGI_CHECK(s.Log.Has("cannot share its own voxels") && !s.GI->GetVoxelSource(),
+          "self accepted: " << s.Log.Text);
+        vtkNew<vtkVoxelGIPass> middle, last;
+        Messages lastLog(last);
+        middle->SetVoxelSource(s.GI);
+        last->SetVoxelSource(middle);
+        VOXELGI_CHECK(lastLog.Has("shares another pass's voxels itself") && !last->GetVoxelSource(),
+          "chain accepted: " << lastLog.Text);
+        // A follower in a window of its own.
+        vtkNew<vtkRenderer> other;
+        vtkVoxelGIScenes::AddCornellBox(other);
+        vtkNew<vtkRenderWindow> otherWindow;
+        otherWindow->SetSize(80, 80);
+        otherWindow->AddRenderer(other);
+        other->SetPass(middle);
+        Messages middleLog(middle);
+        s.Render();
+        otherWindow->Render();
+        otherWindow->Render();
+        VOXELGI_CHECK(s.GI->GetGIActive() && !middle->GetGIActive(), "the other window traced");
+        const std::string error = "renders into another window";
+        const std::size_t first = middleLog.Text.find(error);
+        VOXELGI_CHECK(first != std::string::npos && middleLog.Text.find(error, first + 1) == std::string::npos,
+          "not said once: " << middleLog.Text);
+        // In one window, behind a source without GI.
+        other->SetPass(nullptr);
+        vtkNew<vtkRenderer> second;
+        vtkVoxelGIScenes::AddCornellBox(second);
+        second->SetViewport(0.5, 0.0, 1.0, 1.0);
+        s.Renderer->SetViewport(0.0, 0.0, 0.5, 1.0);
+        second->SetPass(middle);
+        s.Window->AddRenderer(second);
+        s.GI->SetEnabled(false);
+        s.Window->Render();
+        VOXELGI_CHECK(!middle->GetGIActive() && middle->GetNumberOfRenderedProps() > 0,
+          "no VTK image behind a source without GI");
+        s.GI->SetEnabled(true);
+        s.Window->Render();
+        VOXELGI_CHECK(middle->GetGIActive() && middle->GetVoxelMemoryBytes() == 0 &&
+            middle->GetGridResolution() == s.GI->GetGridResolution(),
+          "the follower did not trace the source's grid");
+        VOXELGI_CHECK(Bounded(middle), "non-finite values");
+        return EXIT_SUCCESS;
+      } },
     { "ActorsReleasedThenRevoxelized",
       [] {
         // Releasing the actors' GL resources (VTK does so when props leave a window) must not
