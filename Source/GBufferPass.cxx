@@ -11,6 +11,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLPolyDataMapper.h"
+#include "vtkOpenGLRenderPass.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtkProperty.h"
@@ -26,6 +27,61 @@
 
 namespace voxelgi
 {
+
+namespace
+{
+/// The render pass VTK's mappers see while they draw into any G-buffer of the thread. A
+/// mapper rebuilds its shaders whenever the pass object it draws for changes, so with a pass
+/// object per G-buffer, a mapper shown in several viewports would rebuild in each of them
+/// every frame. The hooks go to the G-buffer drawing now.
+class GBufferShaders : public vtkOpenGLRenderPass
+{
+public:
+  static GBufferShaders* New();
+  vtkTypeMacro(GBufferShaders, vtkOpenGLRenderPass);
+
+  static GBufferShaders* Get()
+  {
+    thread_local vtkSmartPointer<GBufferShaders> shared = vtkSmartPointer<GBufferShaders>::New();
+    return shared;
+  }
+  /// Draw for `gbuffer` into the state's props (PreRender), or stop (PostRender).
+  void Begin(GBufferPass* gbuffer, bool litScene, const vtkRenderState* s)
+  {
+    if (litScene != this->LitScene)
+    {
+      this->LitScene = litScene;
+      this->ShaderStageTime.Modified(); // gbuffer.frag depends on it
+    }
+    this->Drawing = gbuffer;
+    this->PreRender(s);
+  }
+  void End(const vtkRenderState* s)
+  {
+    this->PostRender(s);
+    this->Drawing = nullptr;
+  }
+  void Render(const vtkRenderState*) override {}
+  bool PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override
+  {
+    return this->Drawing->ReplaceShaderValues(
+      vertexShader, geometryShader, fragmentShader, mapper, prop);
+  }
+  bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
+    vtkOpenGLVertexArrayObject*) override
+  {
+    return this->Drawing->SetParameters(program, mapper, prop);
+  }
+  vtkMTimeType GetShaderStageMTime() override { return this->ShaderStageTime.GetMTime(); }
+
+private:
+  GBufferPass* Drawing = nullptr;
+  bool LitScene = true;
+  vtkTimeStamp ShaderStageTime;
+};
+vtkStandardNewMacro(GBufferShaders);
+}
 
 vtkStandardNewMacro(GBufferPass);
 
@@ -93,11 +149,7 @@ bool GBufferPass::Prepare(const Frame& frame, std::string&)
       buffer->Resize(width, height);
     }
   }
-  if (frame.LitScene != this->LitScene)
-  {
-    this->LitScene = frame.LitScene;
-    this->ShaderStageTime.Modified(); // gbuffer.frag depends on it
-  }
+  this->LitScene = frame.LitScene;
   return true;
 }
 
@@ -155,7 +207,8 @@ void GBufferPass::Resolve()
 void GBufferPass::Render(const vtkRenderState* s)
 {
   this->NumberOfRenderedProps = 0;
-  this->PreRender(s);
+  GBufferShaders* shaders = GBufferShaders::Get();
+  shaders->Begin(this, this->LitScene, s);
   this->Begin();
   if (this->Opaque)
   {
@@ -163,7 +216,7 @@ void GBufferPass::Render(const vtkRenderState* s)
     this->NumberOfRenderedProps += this->Opaque->GetNumberOfRenderedProps();
   }
   this->End();
-  this->PostRender(s);
+  shaders->End(s);
 }
 
 vtkOpenGLFramebufferObject* GBufferPass::Target() const
@@ -229,7 +282,7 @@ void GBufferPass::End()
 }
 
 //------------------------------------------------------------------------------
-bool GBufferPass::PostReplaceShaderValues(
+bool GBufferPass::ReplaceShaderValues(
   std::string&, std::string&, std::string& fragment, vtkAbstractMapper* mapper, vtkProp* prop)
 {
   if (!vtkOpenGLPolyDataMapper::SafeDownCast(mapper))
@@ -268,8 +321,7 @@ bool GBufferPass::PostReplaceShaderValues(
   return true;
 }
 
-bool GBufferPass::SetShaderParameters(
-  vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop, vtkOpenGLVertexArrayObject*)
+bool GBufferPass::SetParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop)
 {
   // Polydata mappers write all attachments, other mappers only the colour.
   const bool polyData = vtkOpenGLPolyDataMapper::SafeDownCast(mapper) != nullptr;

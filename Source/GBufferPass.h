@@ -13,27 +13,30 @@
 #define VoxelGIGBufferPass_h
 
 #include "vtkNew.h"              // for vtkNew
-#include "vtkOpenGLRenderPass.h" // for the superclass
+#include "vtkRenderPass.h"       // for the superclass
 #include "vtkSmartPointer.h"     // for vtkSmartPointer
 #include "vtkTextureObject.h"    // for vtkSmartPointer
 
 #include <string>
 
+class vtkAbstractMapper;
 class vtkCameraPass;
 class vtkOpenGLFramebufferObject;
 class vtkRenderbuffer;
 class vtkRenderPassCollection;
+class vtkProp;
 class vtkSequencePass;
+class vtkShaderProgram;
 
 namespace voxelgi
 {
 struct Frame;
 
-class GBufferPass : public vtkOpenGLRenderPass
+class GBufferPass : public vtkRenderPass
 {
 public:
   static GBufferPass* New();
-  vtkTypeMacro(GBufferPass, vtkOpenGLRenderPass);
+  vtkTypeMacro(GBufferPass, vtkRenderPass);
 
   /// Create or resize the textures and the framebuffer for the frame's viewport.
   bool Prepare(const Frame& frame, std::string& error);
@@ -50,12 +53,11 @@ public:
   vtkTextureObject* GetAmbient() const { return this->Ambient; }
   vtkTextureObject* GetDepth() const { return this->Depth; }
 
-  // Shader injection into the mappers (see vtkOpenGLRenderPass).
-  bool PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
-    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
-  bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
-    vtkOpenGLVertexArrayObject* VAO = nullptr) override;
-  vtkMTimeType GetShaderStageMTime() override { return this->ShaderStageTime.GetMTime(); }
+  // Shader injection into the mappers, through the render pass object all G-buffers of a
+  // thread share (vtkOpenGLRenderPass's PostReplaceShaderValues and SetShaderParameters).
+  bool ReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop);
+  bool SetParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop);
 
 protected:
   GBufferPass();
@@ -93,7 +95,6 @@ private:
   vtkNew<vtkCameraPass> OpaqueCamera;
   vtkNew<vtkSequencePass> OpaqueSequence;
   vtkNew<vtkRenderPassCollection> OpaquePasses;
-  vtkTimeStamp ShaderStageTime;
 };
 
 }
