@@ -70,7 +70,11 @@ foreach (i RANGE ${last})
   string(APPEND exposed_information "          <Property name=\"${name}Info\" />\n")
 endforeach ()
 
-set(exposed_groups "${exposed_information}          <Property name=\"GIActive\" />\n")
+set(exposed_groups "${exposed_information}          <Property name=\"GIActive\" />
+          <Property name=\"RankTrafficBytes\" />
+          <Property name=\"RankTrafficMilliseconds\" />
+          <Property name=\"VoxelAlbedoChecksum\" />
+          <Property name=\"Invalidate\" />\n")
 foreach (group IN LISTS groups_order)
   if (NOT exposed_${group} STREQUAL "")
     string(APPEND exposed_groups "        <PropertyGroup label=\"Voxel GI: ${group}\">
@@ -86,6 +90,10 @@ set(content "<!-- Generated from Source/VoxelGISettings.json by Plugin/GenerateV
            processes=\"client|renderserver|dataserver\">
       <Documentation>Voxel global illumination render pass (deferred voxel shading).</Documentation>
 ${properties}      <IntVectorProperty name=\"GIActive\" command=\"GetGIActive\" information_only=\"1\" />
+      <DoubleVectorProperty name=\"RankTrafficBytes\" command=\"GetRankTrafficBytes\" information_only=\"1\" />
+      <DoubleVectorProperty name=\"RankTrafficMilliseconds\" command=\"GetRankTrafficMilliseconds\" information_only=\"1\" />
+      <IntVectorProperty name=\"VoxelAlbedoChecksum\" command=\"GetVoxelAlbedoChecksum\" information_only=\"1\" />
+      <Property name=\"Invalidate\" command=\"Invalidate\" panel_visibility=\"never\" />
     </Proxy>
   </ProxyGroup>
   <ProxyGroup name=\"views\">

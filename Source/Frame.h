@@ -24,6 +24,7 @@ class vtkVoxelGIPass;
 namespace voxelgi
 {
 class LightVoxels;
+class Ranks;
 class VoxelMipmap;
 class VoxelizePass;
 
@@ -113,6 +114,9 @@ struct Frame
   const vtkRenderState* State = nullptr;
   /// The pass that renders VTK's own image (vtkVoxelGIPass's delegate).
   vtkRenderPass* Delegate = nullptr;
+  /// The ranks of a distributed render, whose voxels are merged (one process: not
+  /// Distributed()).
+  Ranks* Processes = nullptr;
   Settings Config;
   StageClock* Clock = nullptr;
   /// The scan's decision for the voxels, and the actors they are built from.

@@ -268,6 +268,15 @@ void Volume3D::Read(unsigned int format, unsigned int type, void* data) const
   glBindTexture(GL_TEXTURE_3D, 0);
 }
 
+void Volume3D::Upload(unsigned int format, unsigned int type, const void* data) const
+{
+  glBindTexture(GL_TEXTURE_3D, this->Handle);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexSubImage3D(
+    GL_TEXTURE_3D, 0, 0, 0, 0, this->Size, this->Size, this->Size, format, type, data);
+  glBindTexture(GL_TEXTURE_3D, 0);
+}
+
 void Volume3D::Release()
 {
   if (this->Handle)

@@ -94,6 +94,8 @@ public:
   int BindSampler(vtkOpenGLRenderWindow* renWin) const;
   /// Read level 0 back into `data`, which must hold Bytes() for the given format/type.
   void Read(unsigned int format, unsigned int type, void* data) const;
+  /// Replace level 0 with `data`, given in `format`/`type`.
+  void Upload(unsigned int format, unsigned int type, const void* data) const;
   std::size_t Bytes() const { return this->ByteSize; }
   int Resolution() const { return this->Size; }
   void Release();

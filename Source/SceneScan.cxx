@@ -1,6 +1,7 @@
 #include "SceneScan.h"
 
 #include "Frame.h"
+#include "Ranks.h"
 #include "vtkVoxelGIPass.h"
 
 #include "vtkAbstractVolumeMapper.h"
@@ -36,6 +37,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <map>
 #include <set>
@@ -480,8 +482,8 @@ bool SceneScan::Due(const Settings& settings, bool settingsChanged, bool pending
 }
 
 //------------------------------------------------------------------------------
-bool SceneScan::Scan(
-  vtkRenderer* renderer, const Settings& settings, VoxelUpdate& update, ScanMessages& messages)
+bool SceneScan::Scan(vtkRenderer* renderer, const Settings& settings, Ranks& ranks,
+  VoxelUpdate& update, ScanMessages& messages)
 {
   const auto start = std::chrono::steady_clock::now();
   struct StopWatch
@@ -498,11 +500,7 @@ bool SceneScan::Scan(
   update = VoxelUpdate();
   std::vector<ActorRecord> records;
   double bounds[6];
-  if (!this->Collect(renderer, records, bounds, messages.Warnings))
-  {
-    this->Records.clear();
-    return false;
-  }
+  bool collected = this->Collect(renderer, records, bounds, messages.Warnings);
   bool full = false, dynamic = false;
   this->Compare(records, settings.AutoDynamic, full, dynamic);
   bool emission = false;
@@ -510,11 +508,39 @@ bool SceneScan::Scan(
   {
     emission = emission || Emits(record.Emission);
   }
-  const bool settingsChanged = !this->Voxelized || !this->BuiltGrid.IsValid() ||
+  bool settingsChanged = !this->Voxelized || !this->BuiltGrid.IsValid() ||
     this->BuiltGrid.Resolution != settings.VoxelResolution ||
     this->BuiltPadding != settings.GridPadding ||
-    emission != this->BuiltEmission ||
     settings.HardwareConservativeRaster != this->BuiltHardware;
+  if (ranks.Distributed())
+  {
+    // One grid around every rank's piece, and what any rank must rebuild, all rebuild.
+    std::vector<double> shared(11, -std::numeric_limits<double>::max());
+    for (int a = 0; a < 3 && collected; ++a)
+    {
+      shared[2 * a] = -bounds[2 * a];
+      shared[2 * a + 1] = bounds[2 * a + 1];
+    }
+    const bool flags[5] = { collected, full, dynamic, emission, settingsChanged };
+    std::copy(flags, flags + 5, shared.begin() + 6);
+    ranks.Max(shared);
+    for (int a = 0; a < 3; ++a)
+    {
+      bounds[2 * a] = -shared[2 * a];
+      bounds[2 * a + 1] = shared[2 * a + 1];
+    }
+    collected = shared[6] > 0.0;
+    full = shared[7] > 0.0;
+    dynamic = shared[8] > 0.0;
+    emission = shared[9] > 0.0;
+    settingsChanged = shared[10] > 0.0;
+  }
+  if (!collected)
+  {
+    this->Records.clear();
+    return false;
+  }
+  settingsChanged = settingsChanged || emission != this->BuiltEmission;
   // The scene left the grid or shrank to under half of it.
   const double extent =
     std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] });

@@ -30,6 +30,7 @@ class vtkRenderer;
 
 namespace voxelgi
 {
+class Ranks;
 struct Settings;
 
 /// The prop's property keys, created if it has none (VTK modifies a prop when it gets them).
@@ -77,8 +78,10 @@ class SceneScan
 public:
   /// Scan `renderer` with `settings` (HardwareConservativeRaster: on and available). Returns
   /// false when there is nothing to voxelize or no grid fits the scene (then `messages` has
-  /// the error): GI cannot run this frame. `update` says what to rebuild.
-  bool Scan(vtkRenderer* renderer, const Settings& settings, VoxelUpdate& update,
+  /// the error): GI cannot run this frame. `update` says what to rebuild. Distributed
+  /// `ranks` agree on one grid around all their pieces and on one update (a collective
+  /// call); a rank without a piece then voxelizes nothing and still takes part.
+  bool Scan(vtkRenderer* renderer, const Settings& settings, Ranks& ranks, VoxelUpdate& update,
     ScanMessages& messages);
   /// The voxels were rebuilt as `update` said: remember what they were built from.
   void Accept(const VoxelUpdate& update, const Settings& settings);

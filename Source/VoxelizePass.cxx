@@ -1,6 +1,7 @@
 #include "VoxelizePass.h"
 
 #include "Frame.h"
+#include "Ranks.h"
 #include "VoxelGIShaders.h"
 #include "vtkVoxelGIPass.h"
 
@@ -194,6 +195,7 @@ void VoxelizePass::Run(const Frame& frame)
     if (full)
     {
       this->Draw(frame, staticProps, true);
+      this->MergeFlags(frame);
     }
     if (!dynamicProps.empty())
     {
@@ -214,7 +216,50 @@ void VoxelizePass::Run(const Frame& frame)
   // Line and point primitives of mixed polydata cannot feed the triangle geometry shader;
   // GL rejects those draws (they have no area to voxelize). Do not leave the errors to VTK.
   ClearErrors();
+  this->MergeSums(frame);
   this->Resolve(frame);
+}
+
+void VoxelizePass::MergeFlags(const Frame& frame)
+{
+  Ranks& ranks = *frame.Processes;
+  if (!ranks.Distributed())
+  {
+    return;
+  }
+  std::vector<unsigned char> flags(Cube(this->Resolution));
+  this->FlagVolume.Read(GL_RED_INTEGER, GL_UNSIGNED_BYTE, flags.data());
+  ranks.Max(flags.data(), flags.size());
+  this->FlagVolume.Upload(GL_RED_INTEGER, GL_UNSIGNED_BYTE, flags.data());
+  Barrier();
+}
+
+void VoxelizePass::MergeSums(const Frame& frame)
+{
+  Ranks& ranks = *frame.Processes;
+  if (!ranks.Distributed())
+  {
+    return;
+  }
+  const std::size_t voxels = Cube(this->Resolution);
+  std::vector<unsigned char> flags;
+  if (!frame.Voxels.Full && ranks.Rank() != 0)
+  {
+    flags.resize(voxels);
+    this->FlagVolume.Read(GL_RED_INTEGER, GL_UNSIGNED_BYTE, flags.data());
+  }
+  std::vector<unsigned int> sums(voxels);
+  for (int c = 0; c < Channels(this->Emission); ++c)
+  {
+    this->Accumulators[c].Read(0, voxels * sizeof(unsigned int), sums.data());
+    for (std::size_t i = 0; i < flags.size(); ++i)
+    {
+      sums[i] = flags[i] ? 0u : sums[i];
+    }
+    ranks.Sum(sums.data(), voxels);
+    this->Accumulators[c].Upload(sums.data(), voxels * sizeof(unsigned int));
+  }
+  Barrier();
 }
 
 void VoxelizePass::AimCamera(const Frame& frame)

@@ -97,6 +97,12 @@ private:
   void Clear(const Frame& frame);
   void Resolve(const Frame& frame);
   void BindAccumulators() const;
+  /// Distributed: every rank takes the union of the ranks' static flags (before the dynamic
+  /// actors draw, which skip static voxels).
+  void MergeFlags(const Frame& frame);
+  /// Distributed: every rank takes the sums of all ranks' accumulators. After a dynamic
+  /// update the static voxels hold the merged sums already: only the first rank adds them.
+  void MergeSums(const Frame& frame);
 
   int Resolution = 0;
   bool Emission = false;

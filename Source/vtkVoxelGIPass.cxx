@@ -9,6 +9,7 @@
 #include "LightBlock.h"
 #include "LightVoxels.h"
 #include "Present.h"
+#include "Ranks.h"
 #include "SceneScan.h"
 #include "ShadowMaps.h"
 #include "VoxelBounce.h"
@@ -21,12 +22,14 @@
 #include "vtkCameraPass.h"
 #include "vtkCommand.h"
 #include "vtkFloatArray.h"
+#include "vtkDataArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationDoubleVectorKey.h"
 #include "vtkInformationIntegerKey.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkPointData.h"
 #include "vtkRenderState.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkRenderer.h"
@@ -36,6 +39,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <sstream>
 #include <vector>
 
@@ -69,6 +73,8 @@ struct vtkVoxelGIPass::Internals
   voxelgi::Present Presenter;
   voxelgi::StageClock Clock;
   voxelgi::Frame Frame;
+  voxelgi::Ranks Processes;
+  bool WarnedRanks = false;
 
   bool Traced = false;
   vtkMTimeType TracedSettings = 0; // the settings' time at the last trace
@@ -105,6 +111,7 @@ struct vtkVoxelGIPass::Internals
   unsigned long WindowObserver = 0;
   bool ContextChecked = false;
   bool ContextOk = false;
+  vtkWeakPointer<vtkRenderWindow> CheckedWindow; // the window whose context was checked
   bool HasConservativeRaster = false;
   int RefusedSize[2] = { 0, 0 }; // the viewport size last refused as too large (said once)
 };
@@ -275,6 +282,35 @@ void vtkVoxelGIPass::Invalidate()
   this->Internal->Scan.Invalidate();
 }
 
+double vtkVoxelGIPass::GetRankTrafficBytes() const
+{
+  return static_cast<double>(this->Internal->Processes.GetBytes());
+}
+
+int vtkVoxelGIPass::GetVoxelAlbedoChecksum()
+{
+  vtkNew<vtkImageData> albedo;
+  if (!this->GetVoxelVolume(VOLUME_ALBEDO, albedo))
+  {
+    return 0;
+  }
+  vtkDataArray* voxels = albedo->GetPointData()->GetScalars();
+  const auto* bytes = static_cast<const unsigned char*>(voxels->GetVoidPointer(0));
+  const std::size_t count =
+    static_cast<std::size_t>(voxels->GetNumberOfValues()) * voxels->GetDataTypeSize();
+  std::uint32_t hash = 2166136261u;
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    hash = (hash ^ bytes[i]) * 16777619u;
+  }
+  return static_cast<int>(hash & 0x7fffffffu);
+}
+
+double vtkVoxelGIPass::GetRankTrafficMilliseconds() const
+{
+  return this->Internal->Processes.GetMilliseconds();
+}
+
 unsigned long long vtkVoxelGIPass::GetAllocatedBytes(int resource) const
 {
   const Internals& in = *this->Internal;
@@ -329,13 +365,15 @@ unsigned long long vtkVoxelGIPass::GetVoxelMemoryBytes() const
 bool vtkVoxelGIPass::CheckContext(vtkRenderWindow* renWin)
 {
   Internals& in = *this->Internal;
-  if (in.ContextChecked && renWin == in.Window.GetPointer())
+  // The window is only followed once GI runs in it: a refused context is checked once too.
+  if (in.ContextChecked && renWin == in.CheckedWindow.GetPointer())
   {
     return in.ContextOk;
   }
   int major = 0, minor = 0;
   voxelgi::ContextVersion(major, minor);
   in.ContextChecked = true;
+  in.CheckedWindow = renWin;
   in.ContextOk = major > 4 || (major == 4 && minor >= 3);
   in.HasConservativeRaster = voxelgi::HasExtension("GL_NV_conservative_raster");
   if (!in.ContextOk)
@@ -356,6 +394,7 @@ void vtkVoxelGIPass::BeginFrame(const vtkRenderState* s)
   frame.Window = in.Window;
   frame.State = s;
   frame.Delegate = this->DelegatePass;
+  frame.Processes = &in.Processes;
   frame.Clock = &in.Clock;
   frame.Grid = in.Scan.GetGrid();
   frame.Actors = &in.Scan.GetRecords();
@@ -551,21 +590,23 @@ void vtkVoxelGIPass::Render(const vtkRenderState* s)
   }
   in.WarnedNoDelegate = false;
   // Hardware picking renders through the pass too: it must see VTK's plain render steps.
-  if (this->Enabled && renWin && !renderer->GetSelector() && this->PassesCombine(renderer) &&
-    this->CheckContext(renWin))
+  bool runs = this->Enabled && renWin && !renderer->GetSelector() &&
+    this->PassesCombine(renderer) && this->CheckContext(renWin);
+  if (runs)
   {
     this->WatchWindow(renWin);
     this->BeginFrame(s);
-    if (this->VoxelSource)
-    {
-      this->GIActive = this->ViewportFits() && this->FollowSource(radianceChanged);
-    }
-    else
-    {
-      this->GIActive = this->ViewportFits() && this->UpdateVoxels(voxelsChanged) &&
-        this->UpdateRadiance(voxelsChanged, radianceChanged);
-      in.RadianceGeneration += (voxelsChanged || radianceChanged) ? 1 : 0;
-    }
+    runs = this->ViewportFits();
+  }
+  if (!this->VoxelSource && this->RanksAgree(runs))
+  {
+    this->GIActive = this->UpdateVoxels(voxelsChanged) &&
+      this->UpdateRadiance(voxelsChanged, radianceChanged);
+    in.RadianceGeneration += (voxelsChanged || radianceChanged) ? 1 : 0;
+  }
+  else if (this->VoxelSource && runs)
+  {
+    this->GIActive = this->FollowSource(radianceChanged);
   }
 
   const bool voxelView = this->DebugView >= DEBUG_VIEW_VOXEL_ALBEDO &&
@@ -595,6 +636,28 @@ void vtkVoxelGIPass::Render(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
+bool vtkVoxelGIPass::RanksAgree(bool runs)
+{
+  Internals& in = *this->Internal;
+  in.Processes.Update();
+  if (!in.Processes.Distributed())
+  {
+    return runs;
+  }
+  // Every rank voxelizes its piece into one grid: either all run GI, or none.
+  in.Processes.ResetTraffic();
+  const bool all = in.Processes.All(runs);
+  if (runs && !all && !in.WarnedRanks)
+  {
+    vtkErrorMacro(<< "Voxel GI is off on every rank: another of the "
+                  << in.Processes.Count()
+                  << " ranks cannot run it (that rank says why). Rendering without GI.");
+  }
+  in.WarnedRanks = runs && !all;
+  return all;
+}
+
+//------------------------------------------------------------------------------
 void vtkVoxelGIPass::RenderDelegate(const vtkRenderState* s)
 {
   this->DelegatePass->Render(s);
@@ -607,7 +670,7 @@ bool vtkVoxelGIPass::UpdateVoxels(bool& changed)
   Internals& in = *this->Internal;
   voxelgi::Frame& frame = in.Frame;
   voxelgi::ScanMessages messages;
-  const bool ok = in.Scan.Scan(frame.Renderer, frame.Config, frame.Voxels, messages);
+  const bool ok = in.Scan.Scan(frame.Renderer, frame.Config, in.Processes, frame.Voxels, messages);
   in.Clock.SetCpuTime(STAGE_SCAN, in.Scan.GetMilliseconds());
   for (const std::string& warning : messages.Warnings)
   {
@@ -626,23 +689,31 @@ bool vtkVoxelGIPass::UpdateVoxels(bool& changed)
   }
   const bool emission = frame.Voxels.Run ? frame.Voxels.Emission : in.Voxelize->HasEmission();
   in.Current = { this->GetMTime(), emission, frame.Width, frame.Height };
-  if (this->Refused())
-  {
-    in.Scan.Reset();
-    return false;
-  }
-  if (!frame.Voxels.Run)
+  const bool refused = this->Refused();
+  if (!frame.Voxels.Run && !refused)
   {
     return true;
   }
   std::string error;
-  if (!this->MemoryFits(emission))
-  {
-    return false;
-  }
-  if (!in.Voxelize->Prepare(frame, error))
+  bool prepared = !refused && this->MemoryFits(emission);
+  if (prepared && !in.Voxelize->Prepare(frame, error))
   {
     this->Refuse(error);
+    prepared = false;
+  }
+  // Ranks voxelize together (every Run is collective when distributed).
+  if (frame.Voxels.Run && in.Processes.Distributed())
+  {
+    const bool all = in.Processes.All(prepared);
+    if (prepared && !all)
+    {
+      this->Refuse("another rank could not prepare its voxel volumes (that rank says why)");
+    }
+    prepared = all;
+  }
+  if (!prepared)
+  {
+    in.Scan.Reset();
     return false;
   }
   in.Scan.Accept(frame.Voxels, frame.Config);

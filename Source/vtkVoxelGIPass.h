@@ -537,6 +537,22 @@ public:
    */
   unsigned long long GetRequiredVoxelMemoryBytes(bool emission);
 
+  /**
+   * Distributed rendering (ParaView's pvbatch or pvserver under MPI, through VTK's global
+   * vtkMultiProcessController): the bytes this rank contributed to the reductions of the
+   * last frame (decisions, grid bounds, and in a voxelizing frame the voxelization sums), and
+   * the milliseconds they took. 0 with one process.
+   */
+  double GetRankTrafficBytes() const;
+  double GetRankTrafficMilliseconds() const;
+
+  /**
+   * A fingerprint of the voxel albedo volume (31 bits of its FNV-1a hash; 0 when there is
+   * none), to compare the voxels of several processes or runs: the ranks of a distributed
+   * render hold the same merged voxels. Reads the volume back (makes the window current).
+   */
+  int GetVoxelAlbedoChecksum();
+
   enum Resources
   {
     RESOURCE_VOXELIZATION = 0, ///< accumulators, flags, albedo and normal volumes
@@ -618,6 +634,9 @@ protected:
   bool UpdateRadiance(bool voxelsChanged, bool& changed);
   /// Say once when the window anti-aliases lines the one-sample G-buffer draws aliased.
   void NoticeAliasing();
+  /// Distributed rendering (MPI ranks): whether every rank `runs` GI this frame (a collective
+  /// call; one error where another rank cannot). One process: `runs`.
+  bool RanksAgree(bool runs);
   /// Gather the renderer's lights into the light block; false (said once) when neither they
   /// nor `emission` light anything. `changed`: the lights differ from the last frame's.
   bool GatherLights(bool emission, bool& changed);

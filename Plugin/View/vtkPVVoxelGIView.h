@@ -7,10 +7,10 @@
  * view, generated from the settings table.
  *
  * Client/server: in the builtin session (client and server in one process) the pass sees all
- * the geometry. With several render-server ranks, each rank currently voxelizes and lights
- * only its own piece, so indirect light between pieces on different ranks is missing; the
- * plan is to merge the voxel grids across ranks (MPI reduction of the voxelization sums and
- * of the radiance) before the per-pixel tracing.
+ * the geometry. With several render-server ranks (pvserver or pvbatch under MPI) each rank
+ * voxelizes its own piece into one grid fitted to all pieces, the ranks add up their
+ * voxelization sums, and every rank lights and traces the merged grid for its own pixels;
+ * IceT composites the ranks' images (see vtkVoxelGIPass::GetRankTrafficBytes).
  */
 #ifndef vtkPVVoxelGIView_h
 #define vtkPVVoxelGIView_h

@@ -1,6 +1,7 @@
 // The Scan stage without a GL context: what it decides to rebuild for each kind of change,
 // the update policies, the props it leaves out, and the key of an unchanged frame.
 #include "Frame.h"
+#include "Ranks.h"
 #include "SceneScan.h"
 #include "vtkVoxelGIPass.h"
 
@@ -42,6 +43,7 @@ struct ScanFixture : public ::testing::Test
   voxelgi::Settings Config;
   voxelgi::VoxelUpdate Update;
   voxelgi::ScanMessages Messages;
+  voxelgi::Ranks OneProcess; // no controller: one process
 
   ScanFixture()
   {
@@ -55,7 +57,8 @@ struct ScanFixture : public ::testing::Test
   bool Next()
   {
     this->Messages = voxelgi::ScanMessages();
-    const bool ok = this->Scan.Scan(this->Renderer, this->Config, this->Update, this->Messages);
+    const bool ok = this->Scan.Scan(
+      this->Renderer, this->Config, this->OneProcess, this->Update, this->Messages);
     if (ok && this->Update.Run)
     {
       this->Scan.Accept(this->Update, this->Config);
