@@ -313,6 +313,34 @@ vtkMTimeType SceneScan::PropSignature(vtkProp* prop, vtkMTimeType* inputTime)
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+/// The record of `actor`, drawn for `prop` (the prop itself, or an image slice's proxy), whose
+/// record in the last scan was `previous` (null: new). A new or changed input is checked for
+/// non-finite points once.
+ActorRecord MakeRecord(vtkProp* prop, vtkActor* actor, vtkMTimeType signature,
+  vtkMTimeType inputTime, const ActorRecord* previous, std::vector<std::string>& warnings)
+{
+  ActorRecord record;
+  record.Actor = actor;
+  record.Signature = signature;
+  record.InputTime = inputTime;
+  if (!previous || inputTime != previous->InputTime)
+  {
+    std::string bad = NonFinitePoints(actor);
+    if (!bad.empty())
+    {
+      warnings.push_back(bad);
+    }
+  }
+  // The user's keys are on the prop (a slice's, not its proxy's).
+  record.Emission = PropEmission(prop);
+  record.UserDynamic = PropUserDynamic(prop);
+  record.Dynamic = record.UserDynamic || (previous && previous->Dynamic);
+  return record;
+}
+}
+
 bool SceneScan::Collect(vtkRenderer* renderer, std::vector<ActorRecord>& records,
   double bounds[6], std::vector<std::string>& warnings)
 {
@@ -378,26 +406,11 @@ bool SceneScan::Collect(vtkRenderer* renderer, std::vector<ActorRecord>& records
         continue;
       }
     }
-    ActorRecord record;
-    record.Actor = actor;
-    record.Signature = signature;
-    record.InputTime = inputTime;
-    auto found = previous.find(actor);
-    if (found == previous.end() || record.InputTime != found->second->InputTime)
-    {
-      std::string bad = NonFinitePoints(actor); // new or changed input: check it once
-      if (!bad.empty())
-      {
-        warnings.push_back(bad);
-      }
-    }
-    // The user's keys are on the prop (a slice's, not its proxy's).
-    record.Emission = PropEmission(prop);
-    record.UserDynamic = PropUserDynamic(prop);
-    record.Dynamic = record.UserDynamic || (found != previous.end() && found->second->Dynamic);
-    Merge(bounds, b, records.empty());
+    const auto found = previous.find(actor);
+    records.push_back(MakeRecord(prop, actor, signature, inputTime,
+      found != previous.end() ? found->second : nullptr, warnings));
+    Merge(bounds, b, records.size() == 1);
     anySpecular = anySpecular || actor->GetProperty()->GetSpecular() > 0.0;
-    records.push_back(record);
   }
   this->Slices.Retain(slices);
   this->ReportLeftOut(leftOut, warnings);
@@ -482,6 +495,53 @@ bool SceneScan::Due(const Settings& settings, bool settingsChanged, bool pending
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+/// What a scan found that the ranks of a distributed render must agree on.
+struct Findings
+{
+  double Bounds[6] = {};
+  bool Collected = false;
+  bool Full = false;
+  bool Dynamic = false;
+  bool Emission = false;
+  bool SettingsChanged = false;
+  bool Invalidate = false;
+};
+
+/// Distributed: one grid around every rank's piece (the union of the bounds), and what any
+/// rank must rebuild, all rebuild (the OR of the rest). One reduction of 12 doubles.
+void Agree(Ranks& ranks, Findings& found)
+{
+  if (!ranks.Distributed())
+  {
+    return;
+  }
+  bool* flags[6] = { &found.Collected, &found.Full, &found.Dynamic, &found.Emission,
+    &found.SettingsChanged, &found.Invalidate };
+  std::vector<double> shared(12, -std::numeric_limits<double>::max());
+  for (int a = 0; a < 3 && found.Collected; ++a)
+  {
+    shared[2 * a] = -found.Bounds[2 * a];
+    shared[2 * a + 1] = found.Bounds[2 * a + 1];
+  }
+  for (int i = 0; i < 6; ++i)
+  {
+    shared[6 + i] = *flags[i] ? 1.0 : 0.0;
+  }
+  ranks.Max(shared);
+  for (int a = 0; a < 3; ++a)
+  {
+    found.Bounds[2 * a] = -shared[2 * a];
+    found.Bounds[2 * a + 1] = shared[2 * a + 1];
+  }
+  for (int i = 0; i < 6; ++i)
+  {
+    *flags[i] = shared[6 + i] > 0.0;
+  }
+}
+}
+
 bool SceneScan::Scan(vtkRenderer* renderer, const Settings& settings, Ranks& ranks,
   VoxelUpdate& update, ScanMessages& messages)
 {
@@ -499,60 +559,39 @@ bool SceneScan::Scan(vtkRenderer* renderer, const Settings& settings, Ranks& ran
 
   update = VoxelUpdate();
   std::vector<ActorRecord> records;
-  double bounds[6];
-  bool collected = this->Collect(renderer, records, bounds, messages.Warnings);
-  bool full = false, dynamic = false;
-  this->Compare(records, settings.AutoDynamic, full, dynamic);
-  bool emission = false;
+  Findings found;
+  found.Collected = this->Collect(renderer, records, found.Bounds, messages.Warnings);
+  this->Compare(records, settings.AutoDynamic, found.Full, found.Dynamic);
   for (const ActorRecord& record : records)
   {
-    emission = emission || Emits(record.Emission);
+    found.Emission = found.Emission || Emits(record.Emission);
   }
-  bool settingsChanged = !this->Voxelized || !this->BuiltGrid.IsValid() ||
+  found.SettingsChanged = !this->Voxelized || !this->BuiltGrid.IsValid() ||
     this->BuiltGrid.Resolution != settings.VoxelResolution ||
     this->BuiltPadding != settings.GridPadding ||
     settings.HardwareConservativeRaster != this->BuiltHardware;
-  if (ranks.Distributed())
-  {
-    // One grid around every rank's piece, and what any rank must rebuild, all rebuild.
-    std::vector<double> shared(11, -std::numeric_limits<double>::max());
-    for (int a = 0; a < 3 && collected; ++a)
-    {
-      shared[2 * a] = -bounds[2 * a];
-      shared[2 * a + 1] = bounds[2 * a + 1];
-    }
-    const bool flags[5] = { collected, full, dynamic, emission, settingsChanged };
-    std::copy(flags, flags + 5, shared.begin() + 6);
-    ranks.Max(shared);
-    for (int a = 0; a < 3; ++a)
-    {
-      bounds[2 * a] = -shared[2 * a];
-      bounds[2 * a + 1] = shared[2 * a + 1];
-    }
-    collected = shared[6] > 0.0;
-    full = shared[7] > 0.0;
-    dynamic = shared[8] > 0.0;
-    emission = shared[9] > 0.0;
-    settingsChanged = shared[10] > 0.0;
-  }
-  if (!collected)
+  found.Invalidate = this->InvalidateRequested;
+  Agree(ranks, found);
+  this->InvalidateRequested = found.Invalidate;
+  if (!found.Collected)
   {
     this->Records.clear();
     return false;
   }
-  settingsChanged = settingsChanged || emission != this->BuiltEmission;
+  const double* bounds = found.Bounds;
+  const bool settingsChanged = found.SettingsChanged || found.Emission != this->BuiltEmission;
   // The scene left the grid or shrank to under half of it.
   const double extent =
     std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] });
   const bool refit = settingsChanged || !this->BuiltGrid.Covers(bounds) ||
     extent * (1.0 + 2.0 * settings.GridPadding) < 0.5 * this->BuiltGrid.Size();
-  if (!this->Due(settings, settingsChanged, full || dynamic || refit))
+  if (!this->Due(settings, settingsChanged, found.Full || found.Dynamic || refit))
   {
     // Keep the voxels and the records they were built from: the change stays pending.
     ++this->FramesSinceUpdate;
     return true;
   }
-  update.Full = full || refit || this->InvalidateRequested ||
+  update.Full = found.Full || refit || this->InvalidateRequested ||
     settings.UpdatePolicy == vtkVoxelGIPass::UPDATE_EVERY_FRAME;
   this->InvalidateRequested = false;
   this->FramesSinceUpdate = 0;
@@ -566,7 +605,7 @@ bool SceneScan::Scan(vtkRenderer* renderer, const Settings& settings, Ranks& ran
     return false;
   }
   update.Run = true;
-  update.Emission = emission;
+  update.Emission = found.Emission;
   this->Pending = std::move(records);
   return true;
 }

@@ -287,6 +287,11 @@ double vtkVoxelGIPass::GetRankTrafficBytes() const
   return static_cast<double>(this->Internal->Processes.GetBytes());
 }
 
+double vtkVoxelGIPass::GetRankTrafficMilliseconds() const
+{
+  return this->Internal->Processes.GetMilliseconds();
+}
+
 int vtkVoxelGIPass::GetVoxelAlbedoChecksum()
 {
   vtkNew<vtkImageData> albedo;
@@ -304,11 +309,6 @@ int vtkVoxelGIPass::GetVoxelAlbedoChecksum()
     hash = (hash ^ bytes[i]) * 16777619u;
   }
   return static_cast<int>(hash & 0x7fffffffu);
-}
-
-double vtkVoxelGIPass::GetRankTrafficMilliseconds() const
-{
-  return this->Internal->Processes.GetMilliseconds();
 }
 
 unsigned long long vtkVoxelGIPass::GetAllocatedBytes(int resource) const

@@ -16,12 +16,9 @@ int TestGICornell(int argc, char* argv[])
 {
   vtkNew<vtkRenderer> renderer;
   vtkVoxelGIScenes::AddCornellBox(renderer);
-  vtkNew<vtkRenderWindow> window;
-  window->SetSize(200, 200);
-  window->AddRenderer(renderer);
-  vtkNew<vtkVoxelGIPass> gi;
-  gi->SetVoxelResolution(64);
-  renderer->SetPass(gi);
+  voxelgi_test::GIWindow view(renderer);
+  vtkRenderWindow* window = view.Window;
+  vtkVoxelGIPass* gi = view.GI;
   window->Render();
   VOXELGI_CHECK(gi->GetGIActive(), "GI did not run");
   VOXELGI_CHECK(voxelgi_test::AllFinite(gi), "non-finite values");

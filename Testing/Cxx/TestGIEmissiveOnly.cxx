@@ -31,12 +31,9 @@ int TestGIEmissiveOnly(int argc, char* argv[])
   panel->GetProperty()->SetAmbientColor(1.0, 0.9, 0.7);
   vtkVoxelGIPass::SetPropEmission(panel, 3.0, 2.7, 2.1);
 
-  vtkNew<vtkRenderWindow> window;
-  window->SetSize(200, 200);
-  window->AddRenderer(renderer);
-  vtkNew<vtkVoxelGIPass> gi;
-  gi->SetVoxelResolution(64);
-  renderer->SetPass(gi);
+  voxelgi_test::GIWindow view(renderer);
+  vtkRenderWindow* window = view.Window;
+  vtkVoxelGIPass* gi = view.GI;
   vtkCamera* camera = renderer->GetActiveCamera();
   camera->SetPosition(2.5, 2.5, 7.0);
   camera->SetFocalPoint(1.6, 0.7, 1.2);

@@ -37,12 +37,9 @@ int TestGIGlossyFloor(int argc, char* argv[])
   sun->SetFocalPoint(0.0, 0.0, 0.0);
   renderer->AddLight(sun);
 
-  vtkNew<vtkRenderWindow> window;
-  window->SetSize(200, 200);
-  window->AddRenderer(renderer);
-  vtkNew<vtkVoxelGIPass> gi;
-  gi->SetVoxelResolution(64);
-  renderer->SetPass(gi);
+  voxelgi_test::GIWindow view(renderer);
+  vtkRenderWindow* window = view.Window;
+  vtkVoxelGIPass* gi = view.GI;
   vtkCamera* camera = renderer->GetActiveCamera();
   camera->SetPosition(0.0, 1.2, 6.0);
   camera->SetFocalPoint(0.0, 0.5, -1.0);

@@ -5,36 +5,21 @@
 #include "vtkVoxelGIScenes.h"
 
 #include "vtkCamera.h"
-#include "vtkCubeSource.h"
 #include "vtkLightCollection.h"
 #include "vtkNew.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
-#include "vtkSphereSource.h"
 
 #include <cstdlib>
 
 int TestGIHeadlight(int argc, char* argv[])
 {
   vtkNew<vtkRenderer> renderer;
-  using glm::dvec3;
-  voxelgi_test::AddQuad(renderer, dvec3(-3, 0, -3), dvec3(-3, 0, 3), dvec3(3, 0, -3), 0.8, 0.8, 0.8);
-  vtkNew<vtkSphereSource> sphere;
-  sphere->SetCenter(-0.8, 0.8, 0.0);
-  sphere->SetRadius(0.8);
-  sphere->SetThetaResolution(32);
-  sphere->SetPhiResolution(32);
-  vtkVoxelGIScenes::AddSource(renderer, sphere, 0.9, 0.6, 0.1);
-  vtkNew<vtkCubeSource> cube;
-  cube->SetBounds(0.4, 1.6, 0.0, 1.2, -0.8, 0.4);
-  vtkVoxelGIScenes::AddSource(renderer, cube, 0.2, 0.5, 0.9);
+  voxelgi_test::AddSphereAndBlockOnFloor(renderer);
 
-  vtkNew<vtkRenderWindow> window;
-  window->SetSize(200, 200);
-  window->AddRenderer(renderer);
-  vtkNew<vtkVoxelGIPass> gi;
-  gi->SetVoxelResolution(64);
-  renderer->SetPass(gi);
+  voxelgi_test::GIWindow view(renderer);
+  vtkRenderWindow* window = view.Window;
+  vtkVoxelGIPass* gi = view.GI;
   vtkCamera* camera = renderer->GetActiveCamera();
   camera->SetPosition(1.0, 3.0, 5.5);
   camera->SetFocalPoint(0.0, 0.4, 0.0);

@@ -40,12 +40,9 @@ int TestGIPhongSphere(int, char*[])
   light->SetFocalPoint(0.0, 0.5, 0.0);
   renderer->AddLight(light);
 
-  vtkNew<vtkRenderWindow> window;
-  window->SetSize(200, 200);
-  window->AddRenderer(renderer);
-  vtkNew<vtkVoxelGIPass> gi;
-  gi->SetVoxelResolution(64);
-  renderer->SetPass(gi);
+  voxelgi_test::GIWindow view(renderer);
+  vtkRenderWindow* window = view.Window;
+  vtkVoxelGIPass* gi = view.GI;
   vtkCamera* camera = renderer->GetActiveCamera();
   camera->SetPosition(1.0, 1.5, 5.0);
   camera->SetFocalPoint(0.0, 0.8, 0.0);

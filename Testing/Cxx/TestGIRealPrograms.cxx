@@ -17,7 +17,6 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
-#include "vtkCubeSource.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkNew.h"
@@ -25,7 +24,6 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
-#include "vtkSphereSource.h"
 #include "vtkTimerLog.h"
 #include "vtkUnsignedCharArray.h"
 
@@ -37,21 +35,8 @@
 
 namespace
 {
-using glm::dvec3;
 
-/// The stages a pass ran in its last frame, comma-separated.
-std::string StagesRan(vtkVoxelGIPass* gi)
-{
-  std::string stages;
-  for (int stage = 0; stage < vtkVoxelGIPass::NUMBER_OF_STAGES; ++stage)
-  {
-    if (gi->GetStageRan(stage))
-    {
-      stages += std::string(stages.empty() ? "" : ",") + vtkVoxelGIPass::GetStageName(stage);
-    }
-  }
-  return stages;
-}
+using voxelgi_test::StagesRan;
 
 /// Whether any voxel stage (scan to bounce) ran.
 bool RanVoxelStage(vtkVoxelGIPass* gi)
@@ -219,23 +204,11 @@ int Viewports(int argc, char* argv[])
 int Headlight(int argc, char* argv[])
 {
   vtkNew<vtkRenderer> renderer;
-  voxelgi_test::AddQuad(renderer, dvec3(-3, 0, -3), dvec3(-3, 0, 3), dvec3(3, 0, -3), 0.8, 0.8, 0.8);
-  vtkNew<vtkSphereSource> sphere;
-  sphere->SetCenter(-0.8, 0.8, 0.0);
-  sphere->SetRadius(0.8);
-  sphere->SetThetaResolution(32);
-  sphere->SetPhiResolution(32);
-  vtkVoxelGIScenes::AddSource(renderer, sphere, 0.9, 0.6, 0.1);
-  vtkNew<vtkCubeSource> cube;
-  cube->SetBounds(0.4, 1.6, 0.0, 1.2, -0.8, 0.4);
-  vtkVoxelGIScenes::AddSource(renderer, cube, 0.2, 0.5, 0.9);
-  vtkNew<vtkRenderWindow> window;
-  window->SetSize(200, 200);
+  voxelgi_test::AddSphereAndBlockOnFloor(renderer);
+  voxelgi_test::GIWindow view(renderer);
+  vtkRenderWindow* window = view.Window;
+  vtkVoxelGIPass* gi = view.GI;
   window->SetMultiSamples(0);
-  window->AddRenderer(renderer);
-  vtkNew<vtkVoxelGIPass> gi;
-  gi->SetVoxelResolution(64);
-  renderer->SetPass(gi);
   vtkCamera* camera = renderer->GetActiveCamera();
 
   // 30 frames of 2 degrees; returns the mean frame time and counts the relit frames.

@@ -49,18 +49,7 @@
 
 namespace
 {
-std::string Stages(vtkVoxelGIPass* gi)
-{
-  std::string ran;
-  for (int s = 0; s < vtkVoxelGIPass::NUMBER_OF_STAGES; ++s)
-  {
-    if (gi->GetStageRan(s))
-    {
-      ran += std::string(ran.empty() ? "" : ",") + vtkVoxelGIPass::GetStageName(s);
-    }
-  }
-  return ran;
-}
+using voxelgi_test::StagesRan;
 
 const std::string Trace = "GBuffer,ConeTrace,Present";
 const std::string Relight = "LightVoxels,Mipmap,Bounce," + Trace;
@@ -195,7 +184,7 @@ int TestStageSkipping(int, char*[])
   renderer->ResetCameraClippingRange();
 
   window->Render();
-  VOXELGI_CHECK(Stages(gi) == Full, "first frame ran " << Stages(gi));
+  VOXELGI_CHECK(StagesRan(gi) == Full, "first frame ran " << StagesRan(gi));
 
   struct Case
   {
@@ -265,8 +254,8 @@ int TestStageSkipping(int, char*[])
     c.Change();
     renderer->ResetCameraClippingRange();
     window->Render();
-    std::cout << c.Name << ": " << Stages(gi) << std::endl;
-    VOXELGI_CHECK(Stages(gi) == c.Expected, c.Name << " ran " << Stages(gi) << ", expected " << c.Expected);
+    std::cout << c.Name << ": " << StagesRan(gi) << std::endl;
+    VOXELGI_CHECK(StagesRan(gi) == c.Expected, c.Name << " ran " << StagesRan(gi) << ", expected " << c.Expected);
     const double difference = DifferenceFromFullRecompute(renderer, window, gi);
     std::cout << "  largest difference from a full recompute: " << difference << std::endl;
     VOXELGI_CHECK(difference < c.Tolerance, c.Name << ": skipping changed the image");
@@ -300,8 +289,8 @@ int TestStageSkipping(int, char*[])
     turn.first();
     renderer->ResetCameraClippingRange();
     window->Render();
-    std::cout << "headlight: " << Stages(gi) << std::endl;
-    VOXELGI_CHECK(Stages(gi) == turn.second, "a headlight change ran " << Stages(gi) << ", expected " << turn.second);
+    std::cout << "headlight: " << StagesRan(gi) << std::endl;
+    VOXELGI_CHECK(StagesRan(gi) == turn.second, "a headlight change ran " << StagesRan(gi) << ", expected " << turn.second);
   }
   // The continued solution against a converged one.
   const double followed = DifferenceFromFullRecompute(renderer, window, gi);
@@ -309,7 +298,7 @@ int TestStageSkipping(int, char*[])
   VOXELGI_CHECK(followed < 0.02, "a camera light's relight differs from a full recompute");
   headlight->SetIntensity(0.8); // not only turned: everything relit
   window->Render();
-  VOXELGI_CHECK(Stages(gi) == "Scan," + Relight, "a headlight's intensity ran " << Stages(gi));
+  VOXELGI_CHECK(StagesRan(gi) == "Scan," + Relight, "a headlight's intensity ran " << StagesRan(gi));
   // Within the glyph case's bound (the glyphs stay dynamic).
   const double relit = DifferenceFromFullRecompute(renderer, window, gi);
   std::cout << "  relit: largest difference from a full recompute: " << relit << std::endl;
@@ -322,10 +311,10 @@ int TestStageSkipping(int, char*[])
   window->Render();
   cube->AddPosition(-1.0, 0.0, 0.0);
   window->Render();
-  VOXELGI_CHECK(Stages(gi) == "Scan," + Trace, "on demand, a moved actor ran " << Stages(gi));
+  VOXELGI_CHECK(StagesRan(gi) == "Scan," + Trace, "on demand, a moved actor ran " << StagesRan(gi));
   gi->Invalidate();
   window->Render();
-  VOXELGI_CHECK(Stages(gi) == Full, "after Invalidate() ran " << Stages(gi));
+  VOXELGI_CHECK(StagesRan(gi) == Full, "after Invalidate() ran " << StagesRan(gi));
 
   gi->SetUpdatePolicyToEveryNFrames();
   gi->SetUpdateInterval(3);
@@ -343,7 +332,7 @@ int TestStageSkipping(int, char*[])
   gi->SetUpdatePolicyToEveryFrame();
   window->Render();
   window->Render();
-  VOXELGI_CHECK(Stages(gi) == Full, "every frame, an unchanged frame ran " << Stages(gi));
+  VOXELGI_CHECK(StagesRan(gi) == Full, "every frame, an unchanged frame ran " << StagesRan(gi));
   gi->SetUpdatePolicyToOnChange();
 
   // Memory of what the scene or the settings do not need is not allocated.

@@ -6,6 +6,7 @@
 
 #include "vtkActor.h"
 #include "vtkAlgorithm.h"
+#include "vtkCubeSource.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
@@ -19,6 +20,7 @@
 #include "vtkWindowToImageFilter.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkSphereSource.h"
 #include "vtkObjectFactory.h"
 #include "vtkTesting.h"
 #include "vtkVersionMacros.h"
@@ -249,24 +251,55 @@ std::vector<vtkActor*> AddClosedBox(vtkRenderer* renderer, double size, double r
   return walls;
 }
 
+std::string StagesRan(vtkVoxelGIPass* gi)
+{
+  std::string ran;
+  for (int stage = 0; stage < vtkVoxelGIPass::NUMBER_OF_STAGES; ++stage)
+  {
+    if (gi->GetStageRan(stage))
+    {
+      ran += std::string(ran.empty() ? "" : ",") + vtkVoxelGIPass::GetStageName(stage);
+    }
+  }
+  return ran;
+}
+
+GIWindow::GIWindow(vtkRenderer* renderer, int resolution)
+{
+  this->Window->SetSize(200, 200);
+  this->Window->AddRenderer(renderer);
+  this->GI->SetVoxelResolution(resolution);
+  renderer->SetPass(this->GI);
+}
+
+void AddSphereAndBlockOnFloor(vtkRenderer* renderer)
+{
+  using glm::dvec3;
+  AddQuad(renderer, dvec3(-3, 0, -3), dvec3(-3, 0, 3), dvec3(3, 0, -3), 0.8, 0.8, 0.8);
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetCenter(-0.8, 0.8, 0.0);
+  sphere->SetRadius(0.8);
+  sphere->SetThetaResolution(32);
+  sphere->SetPhiResolution(32);
+  vtkVoxelGIScenes::AddSource(renderer, sphere, 0.9, 0.6, 0.1);
+  vtkNew<vtkCubeSource> cube;
+  cube->SetBounds(0.4, 1.6, 0.0, 1.2, -0.8, 0.4);
+  vtkVoxelGIScenes::AddSource(renderer, cube, 0.2, 0.5, 0.9);
+}
+
 int CornellRegressionTest(int argc, char* argv[], int debugView)
 {
   vtkNew<vtkRenderer> renderer;
   vtkVoxelGIScenes::AddCornellBox(renderer);
-  vtkNew<vtkRenderWindow> window;
-  window->SetSize(200, 200);
-  window->AddRenderer(renderer);
-  vtkNew<vtkVoxelGIPass> gi;
-  gi->SetVoxelResolution(64);
-  gi->SetDebugView(debugView);
-  renderer->SetPass(gi);
-  window->Render();
-  if (!gi->GetGIActive() || !AllFinite(gi))
+  GIWindow view(renderer);
+  view.GI->SetDebugView(debugView);
+  view.Window->Render();
+  if (!view.GI->GetGIActive() || !AllFinite(view.GI))
   {
     std::cerr << "GI did not run, or produced non-finite values" << std::endl;
     return EXIT_FAILURE;
   }
-  return ImageMatches(argc, argv, window);
+  return ImageMatches(argc, argv, view.Window);
 }
 
 bool TriangleBoxOverlap(const glm::dvec3& boxCenter, const glm::dvec3& boxHalf,

@@ -2,6 +2,10 @@
 #ifndef VoxelGITestUtilities_h
 #define VoxelGITestUtilities_h
 
+#include "vtkNew.h"          // for vtkNew
+#include "vtkRenderWindow.h" // for vtkNew
+#include "vtkVoxelGIPass.h"  // for vtkNew
+
 #include <glm/glm.hpp>
 
 #include <iostream>
@@ -11,9 +15,7 @@
 class vtkActor;
 class vtkAlgorithm;
 class vtkFloatArray;
-class vtkRenderWindow;
 class vtkRenderer;
-class vtkVoxelGIPass;
 
 namespace voxelgi_test
 {
@@ -39,6 +41,9 @@ bool AllFinite(vtkVoxelGIPass* gi);
 /// AllFinite, and the composite within [0, 65504] (prints what is not).
 bool Bounded(vtkVoxelGIPass* gi);
 
+/// The stages `gi` ran in its last frame, by name, comma-separated.
+std::string StagesRan(vtkVoxelGIPass* gi);
+
 /// Prints `value` against its goal, as met or "GOAL NOT MET", with the bound asserted today;
 /// false (printed) when it exceeds that bound.
 bool Within(const std::string& what, double value, double goal, double asserted);
@@ -49,6 +54,18 @@ double MeanOver(vtkFloatArray* image, int w, int x0, int y0, int x1, int y1, int
 /// Renders the Cornell box with GI (64^3 voxels, 200 x 200 pixels) in `debugView`, checks
 /// that everything stays finite and compares with the test's baseline image.
 int CornellRegressionTest(int argc, char* argv[], int debugView);
+
+/// The image tests' window (200 x 200) showing `renderer` through a pass of
+/// `resolution`^3 voxels.
+struct GIWindow
+{
+  vtkNew<vtkRenderWindow> Window;
+  vtkNew<vtkVoxelGIPass> GI;
+  explicit GIWindow(vtkRenderer* renderer, int resolution = 64);
+};
+
+/// Add an orange sphere and a blue block standing on a grey floor 6 units wide.
+void AddSphereAndBlockOnFloor(vtkRenderer* renderer);
 
 /// Add a quad from `o` spanned by p1 - o and p2 - o (normal (p1 - o) x (p2 - o)).
 vtkActor* AddQuad(vtkRenderer* renderer, const glm::dvec3& o, const glm::dvec3& p1,

@@ -77,18 +77,23 @@ def differences(a, b):
             for i in range(a.GetNumberOfTuples())]
 
 
-def check_off():
-    """A rank cannot run GI: none runs it, and the image is ParaView's own."""
-    if reduce([float(pass_value("GIActive"))], vtkCommunicator.MAX_OP)[0] > 0.0:
-        failures.append("GI ran on a rank although another cannot run it")
+def screenshots():
+    """The view's image, then ParaView's own (GI off) next to it; returns the latter's name."""
     SaveScreenshot(output, view, ImageResolution=[300, 300])
     view.EnableVoxelGI = 0
     Render(view)
     plain_output = output.replace(".png", "-plain.png")
     SaveScreenshot(plain_output, view, ImageResolution=[300, 300])
+    return plain_output
+
+
+def check_off():
+    """A rank cannot run GI: none runs it, and the image is ParaView's own."""
+    if reduce([float(pass_value("GIActive"))], vtkCommunicator.MAX_OP)[0] > 0.0:
+        failures.append("GI ran on a rank although another cannot run it")
+    plain_output = screenshots()
     if rank == 0:
-        a, b = read(output), read(plain_output)
-        largest = max(abs(a.GetValue(i) - b.GetValue(i)) for i in range(a.GetNumberOfValues()))
+        largest = max(differences(read(output), read(plain_output)))
         print("GI off on every rank; largest difference to ParaView's own image: %d levels"
               % largest)
         if largest > 0:
@@ -110,13 +115,9 @@ def check_merged():
     Render(view)
     traffic = reduce([pass_value("RankTrafficBytes"), pass_value("RankTrafficMilliseconds")],
                      vtkCommunicator.MAX_OP)
-    SaveScreenshot(output, view, ImageResolution=[300, 300])
     # ParaView's own image of the scene: where it differs between rank counts (IceT's
     # compositing of silhouettes), GI's cannot be compared.
-    view.EnableVoxelGI = 0
-    Render(view)
-    plain_output = output.replace(".png", "-plain.png")
-    SaveScreenshot(plain_output, view, ImageResolution=[300, 300])
+    plain_output = screenshots()
     if rank == 0:
         print("%d rank(s), %d^3: a voxelizing frame reduced %.1f MiB per rank in %.1f ms" %
               (ranks, resolution, traffic[0] / 2.0**20, traffic[1]))
