@@ -62,9 +62,75 @@ void Ranks::Max(unsigned char* values, std::size_t count)
   this->Reduce(values, count, vtkCommunicator::MAX_OP);
 }
 
-void Ranks::Sum(unsigned int* values, std::size_t count)
+template <typename T>
+void Ranks::ReduceVolume(T* voxels, int resolution, int brick, int operation)
 {
-  this->Reduce(values, count, vtkCommunicator::SUM_OP);
+  if (!this->Controller)
+  {
+    return;
+  }
+  const std::size_t n = static_cast<std::size_t>(resolution);
+  const std::size_t b = static_cast<std::size_t>(brick);
+  const std::size_t bricks = n / b;
+  std::vector<unsigned char> occupied(bricks * bricks * bricks, 0);
+  for (std::size_t z = 0; z < n; ++z)
+  {
+    for (std::size_t y = 0; y < n; ++y)
+    {
+      const T* row = voxels + n * (y + n * z);
+      unsigned char* brickRow = occupied.data() + bricks * (y / b + bricks * (z / b));
+      for (std::size_t x = 0; x < n; ++x)
+      {
+        brickRow[x / b] |= row[x] != T(0) ? 1 : 0;
+      }
+    }
+  }
+  this->Reduce(occupied.data(), occupied.size(), vtkCommunicator::MAX_OP);
+
+  // Every rank walks the same bricks in the same order: the packed values line up.
+  const auto forEachVoxel = [&](auto&& visit) {
+    std::size_t index = 0;
+    for (std::size_t bz = 0; bz < bricks; ++bz)
+    {
+      for (std::size_t by = 0; by < bricks; ++by)
+      {
+        for (std::size_t bx = 0; bx < bricks; ++bx, ++index)
+        {
+          if (!occupied[index])
+          {
+            continue;
+          }
+          for (std::size_t z = bz * b; z < (bz + 1) * b; ++z)
+          {
+            for (std::size_t y = by * b; y < (by + 1) * b; ++y)
+            {
+              T* row = voxels + n * (y + n * z);
+              for (std::size_t x = bx * b; x < (bx + 1) * b; ++x)
+              {
+                visit(row[x]);
+              }
+            }
+          }
+        }
+      }
+    }
+  };
+  std::vector<T> packed;
+  packed.reserve(static_cast<std::size_t>(std::count(occupied.begin(), occupied.end(), 1)) * b * b * b);
+  forEachVoxel([&](T& v) { packed.push_back(v); });
+  this->Reduce(packed.data(), packed.size(), operation);
+  auto next = packed.begin();
+  forEachVoxel([&](T& v) { v = *next++; });
+}
+
+void Ranks::MaxVolume(unsigned char* voxels, int resolution, int brick)
+{
+  this->ReduceVolume(voxels, resolution, brick, vtkCommunicator::MAX_OP);
+}
+
+void Ranks::SumVolume(unsigned int* voxels, int resolution, int brick)
+{
+  this->ReduceVolume(voxels, resolution, brick, vtkCommunicator::SUM_OP);
 }
 
 void Ranks::ResetTraffic()

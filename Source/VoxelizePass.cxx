@@ -229,7 +229,7 @@ void VoxelizePass::MergeFlags(const Frame& frame)
   }
   std::vector<unsigned char> flags(Cube(this->Resolution));
   this->FlagVolume.Read(GL_RED_INTEGER, GL_UNSIGNED_BYTE, flags.data());
-  ranks.Max(flags.data(), flags.size());
+  ranks.MaxVolume(flags.data(), this->Resolution, VOXELGI_LOCAL_SIZE);
   this->FlagVolume.Upload(GL_RED_INTEGER, GL_UNSIGNED_BYTE, flags.data());
   Barrier();
 }
@@ -256,7 +256,7 @@ void VoxelizePass::MergeSums(const Frame& frame)
     {
       sums[i] = flags[i] ? 0u : sums[i];
     }
-    ranks.Sum(sums.data(), voxels);
+    ranks.SumVolume(sums.data(), this->Resolution, VOXELGI_LOCAL_SIZE);
     this->Accumulators[c].Upload(sums.data(), voxels * sizeof(unsigned int));
   }
   Barrier();

@@ -75,6 +75,11 @@ struct vtkVoxelGIPass::Internals
   voxelgi::Frame Frame;
   voxelgi::Ranks Processes;
   bool WarnedRanks = false;
+  // RenderRanks' results, which the next Render() takes: whether GI runs, and whether the
+  // voxels changed since a Render() last took them (a rank may miss frames).
+  bool RanksDone = false;
+  bool RanksActive = false;
+  bool RanksVoxelsChanged = false;
 
   bool Traced = false;
   vtkMTimeType TracedSettings = 0; // the settings' time at the last trace
@@ -386,11 +391,19 @@ bool vtkVoxelGIPass::CheckContext(vtkRenderWindow* renWin)
 }
 
 //------------------------------------------------------------------------------
-void vtkVoxelGIPass::BeginFrame(const vtkRenderState* s)
+bool vtkVoxelGIPass::BeginFrame(vtkRenderer* renderer, const vtkRenderState* s)
 {
   Internals& in = *this->Internal;
+  auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  // Hardware picking renders through the pass too: it must see VTK's plain render steps.
+  if (!(this->Enabled && renWin && !renderer->GetSelector() && this->PassesCombine(renderer) &&
+        this->CheckContext(renWin)))
+  {
+    return false;
+  }
+  this->WatchWindow(renWin);
   voxelgi::Frame& frame = in.Frame;
-  frame.Renderer = s->GetRenderer();
+  frame.Renderer = renderer;
   frame.Window = in.Window;
   frame.State = s;
   frame.Delegate = this->DelegatePass;
@@ -403,6 +416,32 @@ void vtkVoxelGIPass::BeginFrame(const vtkRenderState* s)
   frame.Mipmap = &in.Mipmap;
   frame.Renderer->GetTiledSizeAndOrigin(&frame.Width, &frame.Height, &frame.X, &frame.Y);
   frame.Config = voxelgi::Snapshot(this, in.HasConservativeRaster);
+  return this->ViewportFits();
+}
+
+bool vtkVoxelGIPass::UpdateShared(bool runs, bool& voxelsChanged)
+{
+  voxelsChanged = false;
+  return this->RanksAgree(runs) && this->UpdateVoxels(voxelsChanged);
+}
+
+void vtkVoxelGIPass::RenderRanks(vtkRenderer* renderer)
+{
+  Internals& in = *this->Internal;
+  in.Processes.Update();
+  if (!in.Processes.Distributed() || this->VoxelSource || !this->DelegatePass ||
+    !this->ServeRenderer(renderer))
+  {
+    return;
+  }
+  in.Clock.Reset();
+  in.Clock.SetTiming(this->TimeStages != 0);
+  bool changed = false;
+  in.RanksActive = this->UpdateShared(this->BeginFrame(renderer, nullptr), changed);
+  in.RanksVoxelsChanged = in.RanksVoxelsChanged || changed;
+  in.RanksDone = true;
+  // A rank whose Render() is skipped (nothing in view) still runs GI with the others.
+  this->GIActive = in.RanksActive;
 }
 
 //------------------------------------------------------------------------------
@@ -569,13 +608,15 @@ void vtkVoxelGIPass::Render(const vtkRenderState* s)
     }
     return;
   }
-  in.Clock.Reset();
-  in.Clock.SetTiming(this->TimeStages != 0);
+  if (!in.RanksDone)
+  {
+    in.Clock.Reset();
+    in.Clock.SetTiming(this->TimeStages != 0);
+  }
   this->GIActive = false;
   const bool traced = in.Traced;
   in.Traced = false;
   vtkRenderer* renderer = s->GetRenderer();
-  auto* renWin = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
   bool voxelsChanged = false;
   bool radianceChanged = false;
   if (!this->DelegatePass)
@@ -589,22 +630,24 @@ void vtkVoxelGIPass::Render(const vtkRenderState* s)
     return;
   }
   in.WarnedNoDelegate = false;
-  // Hardware picking renders through the pass too: it must see VTK's plain render steps.
-  bool runs = this->Enabled && renWin && !renderer->GetSelector() &&
-    this->PassesCombine(renderer) && this->CheckContext(renWin);
-  if (runs)
+  const bool runs = this->BeginFrame(renderer, s);
+  if (!this->VoxelSource)
   {
-    this->WatchWindow(renWin);
-    this->BeginFrame(s);
-    runs = this->ViewportFits();
-  }
-  if (!this->VoxelSource && this->RanksAgree(runs))
-  {
-    this->GIActive = this->UpdateVoxels(voxelsChanged) &&
-      this->UpdateRadiance(voxelsChanged, radianceChanged);
+    bool active = false;
+    if (in.RanksDone)
+    {
+      active = runs && in.RanksActive;
+      voxelsChanged = in.RanksVoxelsChanged;
+      in.RanksDone = in.RanksVoxelsChanged = false;
+    }
+    else
+    {
+      active = this->UpdateShared(runs, voxelsChanged);
+    }
+    this->GIActive = active && this->UpdateRadiance(voxelsChanged, radianceChanged);
     in.RadianceGeneration += (voxelsChanged || radianceChanged) ? 1 : 0;
   }
-  else if (this->VoxelSource && runs)
+  else if (runs)
   {
     this->GIActive = this->FollowSource(radianceChanged);
   }
@@ -621,7 +664,7 @@ void vtkVoxelGIPass::Render(const vtkRenderState* s)
     const bool unchanged = in.Scan.Unchanged(renderer, this->GetMTime());
     in.Frame.CameraOnly = traced && !voxelsChanged && !radianceChanged &&
       this->GetMTime() == in.TracedSettings;
-      this->RenderGI(in.Frame.CameraOnly && unchanged);
+    this->RenderGI(in.Frame.CameraOnly && unchanged);
     in.Scan.RememberFrame(renderer, this->GetMTime());
   }
   if (this->GIActive && voxelView)

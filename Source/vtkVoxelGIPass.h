@@ -436,6 +436,17 @@ public:
    */
   void Invalidate();
 
+  /**
+   * In a distributed render (MPI ranks, e.g. ParaView in parallel), the part of a frame the
+   * ranks do together: agreeing to run GI, scanning, and merging the voxels. Compositors skip
+   * a rank's Render() when it has nothing in view (IceT does), and a collective call then
+   * waits for it forever: call this on every rank at the start of every frame of `renderer`
+   * (ParaView's Voxel GI view does, at the renderer's StartEvent); Render() then takes its
+   * results. Without it Render() does this part itself, which holds where every rank renders
+   * every frame. Does nothing in one process.
+   */
+  void RenderRanks(vtkRenderer* renderer);
+
   ///@{
   /**
    * Rasterize conservatively with the GPU's GL_NV_conservative_raster where the context has
@@ -511,7 +522,8 @@ public:
 
   /**
    * True when the last frame ran the GI stages (false when GI was off, could not run on this
-   * context, or the scene had nothing to voxelize).
+   * context, or the scene had nothing to voxelize). A rank of a distributed render whose
+   * Render() the compositor skipped reports its part in the ranks' voxels (RenderRanks).
    */
   vtkGetMacro(GIActive, bool);
 
@@ -624,8 +636,10 @@ protected:
   bool Refused() const;
   /// OpenGL 4.3 available? Reports a missing capability once.
   bool CheckContext(vtkRenderWindow* renWin);
-  /// The frame the stages see: renderer, window, viewport and a snapshot of the settings.
-  void BeginFrame(const vtkRenderState* s);
+  /// Whether GI can run in `renderer` this frame (this process's view); begins the frame.
+  bool BeginFrame(vtkRenderer* renderer, const vtkRenderState* s);
+  /// The ranks' part of the frame (RanksAgree, UpdateVoxels): whether GI runs.
+  bool UpdateShared(bool runs, bool& voxelsChanged);
   /// Scan the scene and bring the voxels up to date (Voxelize stage); false if GI cannot
   /// run. `changed` tells whether any voxel was rewritten.
   bool UpdateVoxels(bool& changed);

@@ -1,8 +1,10 @@
 #include "vtkPVVoxelGIView.h"
 
+#include "vtkCommand.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVSynchronizedRenderer.h"
 #include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
 #include "vtkVoxelGIPass.h"
 
 vtkStandardNewMacro(vtkPVVoxelGIView);
@@ -11,10 +13,13 @@ vtkPVVoxelGIView::vtkPVVoxelGIView()
 {
   // FXAA post-processes the image the pass composited; keep the GI image as it is.
   this->UseFXAA = false;
+  this->StartObserver = this->GetRenderer()->AddObserver(
+    vtkCommand::StartEvent, this, &vtkPVVoxelGIView::RenderRanks);
 }
 
 vtkPVVoxelGIView::~vtkPVVoxelGIView()
 {
+  this->GetRenderer()->RemoveObserver(this->StartObserver);
   // The pass stays set on the renderer: its GL resources are freed with the window's
   // (vtkRenderer::ReleaseGraphicsResources), which may already have closed its display here.
   if (this->GIPass)
@@ -40,6 +45,14 @@ void vtkPVVoxelGIView::SetGIPass(vtkVoxelGIPass* pass)
   }
   this->SynchronizedRenderers->SetRenderPass(pass);
   this->Modified();
+}
+
+void vtkPVVoxelGIView::RenderRanks()
+{
+  if (this->GIPass)
+  {
+    this->GIPass->RenderRanks(this->GetRenderer());
+  }
 }
 
 void vtkPVVoxelGIView::PrintSelf(ostream& os, vtkIndent indent)

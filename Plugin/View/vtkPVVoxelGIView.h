@@ -10,7 +10,9 @@
  * the geometry. With several render-server ranks (pvserver or pvbatch under MPI) each rank
  * voxelizes its own piece into one grid fitted to all pieces, the ranks add up their
  * voxelization sums, and every rank lights and traces the merged grid for its own pixels;
- * IceT composites the ranks' images (see vtkVoxelGIPass::GetRankTrafficBytes).
+ * IceT composites the ranks' images (see vtkVoxelGIPass::GetRankTrafficBytes). IceT skips
+ * ranks with nothing in view: the view starts every frame with the pass's collective part on
+ * every rank (vtkVoxelGIPass::RenderRanks).
  */
 #ifndef vtkPVVoxelGIView_h
 #define vtkPVVoxelGIView_h
@@ -37,7 +39,11 @@ protected:
   vtkPVVoxelGIView();
   ~vtkPVVoxelGIView() override;
 
+  /// The renderer's StartEvent: the pass's collective part of the frame.
+  void RenderRanks();
+
   vtkVoxelGIPass* GIPass = nullptr;
+  unsigned long StartObserver = 0;
 
 private:
   vtkPVVoxelGIView(const vtkPVVoxelGIView&) = delete;
