@@ -907,7 +907,8 @@ bool vtkVoxelGIPass::LightAndBounce(bool follow)
   const voxelgi::Frame& frame = in.Frame;
   std::string error;
   bool ok = true;
-  if (frame.Config.LightOcclusion == LIGHT_OCCLUSION_SHADOW_MAPS)
+  // A rank's maps would see its own piece only; the raymarch sees the merged voxels.
+  if (frame.Config.LightOcclusion == LIGHT_OCCLUSION_SHADOW_MAPS && !in.Processes.Distributed())
   {
     ok = in.Shadows.Prepare(frame, in.Lights, error);
     if (ok)

@@ -44,10 +44,10 @@ const std::map<std::string, Bounds>& SceneBounds()
   static const std::map<std::string, Bounds> bounds = {
     { "cornell", { 0.30, 0.30, 1.0, 0.10, 0.50 } },
     { "glossy", { 0.30, 0.30, 1.0, 0.10, 0.50 } },
-    { "isosurface", { 0.30, 0.35, 1.0, 0.10, 0.50 } },
-    { "glyphs", { 0.12, 0.165, 1.0, 0.10, 0.60 } },
+    { "isosurface", { 0.30, 0.30, 1.0, 0.10, 0.50 } },
+    { "glyphs", { 0.12, 0.135, 1.0, 0.10, 0.56 } },
     { "emissive", { 0.30, 0.30, 1.0, 0.10, 0.50 } },
-    { "streamlines", { 0.12, 0.19, 1.0, 0.36, 0.69 } },
+    { "streamlines", { 0.12, 0.12, 1.0, 0.16, 0.50 } },
   };
   return bounds;
 }

@@ -62,6 +62,9 @@ view = CreateView("VoxelGIRenderView")
 view.ViewSize = [300, 300]
 view.OrientationAxesVisibility = 0
 view.VoxelResolution = resolution
+# Ranks light the voxels with voxel shadows (their shadow maps would see one piece each): the
+# one-rank reference does the same.
+view.LightOcclusion = "VoxelShadows"
 # IceT composites single-sampled images: the one-rank reference is drawn so too.
 view.GetRenderWindow().SetMultiSamples(0)
 
