@@ -3,21 +3,27 @@
 // runs on a few of their units, a full-screen fragment pass is many times slower). From
 // the G-buffer it reconstructs each pixel's position in grid coordinates, traces diffuse
 // cones over the normal's hemisphere (indirect diffuse and AO), one specular cone whose
-// aperture follows the specular power, and a narrow cone toward each light for soft shadows.
+// aperture follows the specular power, and a narrow cone toward each light for soft shadows
+// (with VOXELGI_SHADOW_MAPS, a scene light that has a shadow map is looked up there instead:
+// the map holds the geometry itself, where a narrow cone sees the voxels' steps).
 // Outputs: 0 = indirect light (diffuse x albedo + specular) and AO, 1 = the part of VTK's
-// direct shading (Phong, per shadowed light) that the shadow cones find occluded, 2 = the
+// direct shading (Phong, per shadowed light) that the shadows take away, 2 = the
 // surface they belong to (for the next frame's reuse).
 // composite.comp upsamples these and composites them with VTK's shading.
 //
 // Temporal reuse (temporalPhase >= 0, frames where only the camera changed): the tiles of one
 // class of four are traced, the others take the previous frame's result where the previous
 // frame saw the same surface there (reprojected position, normal and, on specular surfaces,
-// the view direction), and are traced where it did not.
+// the view direction), and are traced where it did not. Shadows that all come from maps are
+// looked up afresh in every pixel.
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "lights.glsl"
 #include "cone_tracing.glsl"
 #include "gbuffer_position.glsl"
+#ifdef VOXELGI_SHADOW_MAPS
+#include "shadow_maps.glsl"
+#endif
 
 uniform sampler2D gbufferNormal;
 uniform sampler2D gbufferMaterial;
@@ -155,6 +161,73 @@ bool previousResults(vec3 p, vec3 n, vec3 viewDir, float viewCosine, ivec2 size,
   return true;
 }
 
+// Whether light l's shadow in the pixels is read from its shadow map (else a cone traces it).
+bool pixelShadowMap(int l)
+{
+#ifdef VOXELGI_SHADOW_MAPS
+  return shadowMapped(l) && shadowLights[l].z != 0;
+#else
+  return false;
+#endif
+}
+
+// Whether every light that casts shadows in the pixels has a shadow map: then the shadows
+// are exact and cheap, and a reused tile looks them up afresh instead of resampling the last
+// frame's edges.
+bool shadowsFromMapsOnly()
+{
+  for (int l = 0; l < voxelLightInfo.x; ++l)
+  {
+    if (voxelLights[l].attenuation.w == 0.0 && !pixelShadowMap(l))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+// The part of VTK's direct shading (diffuse albedo, specular coefficient and power) at the
+// surface point p (normal n, seen along viewDir) that the lights' shadows take away.
+vec3 occludedDirect(vec3 p, vec3 origin, vec3 n, vec3 viewDir, vec3 albedo, float specular, float power)
+{
+  vec3 occluded = vec3(0.0);
+  for (int l = 0; l < voxelLightInfo.x; ++l)
+  {
+    if (voxelLights[l].attenuation.w != 0.0)
+    {
+      continue; // a headlight's shadows are hidden behind what casts them
+    }
+    vec3 toLight;
+    float distance;
+    float attenuation = voxelLightIncidence(l, p, toLight, distance);
+    float df = attenuation * dot(n, toLight);
+    if (!(df > 0.0))
+    {
+      continue;
+    }
+    float shadow;
+#ifdef VOXELGI_SHADOW_MAPS
+    if (pixelShadowMap(l))
+    {
+      shadow = 1.0 - shadowMapSurfaceVisibility(l, p, n, distance);
+    }
+    else
+#endif
+    {
+      // Toward a grazing light the cone runs along its own surface's voxels: start it where
+      // it has risen a voxel and a half above the surface.
+      float start = max(1.0, 1.5 / max(dot(n, toLight), 0.1));
+      // Stop short of the light by the cone's width there, so that geometry next to the
+      // light (the ceiling a lamp hangs from) does not shadow everything it lights.
+      float end = min(distance - max(2.0, 2.0 * shadowTanHalf * distance), maxDistance);
+      voxelConeTrace(origin, toLight, shadowTanHalf, start, end, 0.0, p, n, shadow);
+    }
+    float sf = attenuation * pow(max(dot(reflect(-toLight, n), -viewDir), 0.0), power);
+    occluded += shadow * (df * albedo + sf * specular) * voxelLights[l].color.rgb;
+  }
+  return occluded;
+}
+
 void main()
 {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
@@ -205,13 +278,22 @@ void main()
   uvec2 tile = gl_WorkGroupID.xy & 1u;
   if (temporalPhase >= 0 && int(tile.x + 2u * tile.y) != temporalPhase)
   {
-    // Specular light depends on the view: reuse it only over a small fraction of its lobe.
-    bool viewDependent = specular > 0.0 && (specularCone != 0 || coneShadows != 0);
+    // Specular light depends on the view, and so do the highlights that cone shadows take
+    // away (map shadows are looked up afresh below): reuse them only over a small fraction
+    // of the lobe.
+    bool freshShadows = coneShadows != 0 && shadowsFromMapsOnly();
+    bool viewDependent = specular > 0.0 && (specularCone != 0 || (coneShadows != 0 && !freshShadows));
     float viewCosine = viewDependent ? cos(0.2 * atan(specularTanHalf(normalSpec.w))) : -2.0;
     vec4 previousIndirectAO, previousOccluded;
     uint age;
     if (previousResults(p, n, viewDir, viewCosine, size, previousIndirectAO, previousOccluded, age))
     {
+      if (freshShadows)
+      {
+        vec3 occluded = occludedDirect(p, p + n * startOffset, n, viewDir, albedo, specular, normalSpec.w);
+        previousOccluded =
+          !any(isnan(occluded)) && !any(isinf(occluded)) ? vec4(occluded, 1.0) : vec4(0.0);
+      }
       imageStore(traceIndirect, pixel, previousIndirectAO);
       imageStore(traceShadowed, pixel, previousOccluded);
       imageStore(traceSurface, pixel, vec4(depth, encodeSurface(n, age + 1u), 0.0, 0.0));
@@ -245,35 +327,7 @@ void main()
       voxelConeTrace(origin, r, specularTanHalf(normalSpec.w), 1.0, maxDistance, 0.0, p, n, ignored).rgb;
   }
 
-  vec3 shadowed = vec3(0.0);
-  if (coneShadows != 0)
-  {
-    for (int l = 0; l < voxelLightInfo.x; ++l)
-    {
-      if (voxelLights[l].attenuation.w != 0.0)
-      {
-        continue; // a headlight's shadows are hidden behind what casts them
-      }
-      vec3 toLight;
-      float distance;
-      float attenuation = voxelLightIncidence(l, p, toLight, distance);
-      float df = attenuation * dot(n, toLight);
-      if (!(df > 0.0))
-      {
-        continue;
-      }
-      // Toward a grazing light the cone runs along its own surface's voxels: start it where
-      // it has risen a voxel and a half above the surface.
-      float start = max(1.0, 1.5 / max(dot(n, toLight), 0.1));
-      // Stop short of the light by the cone's width there, so that geometry next to the light
-      // (the ceiling a lamp hangs from) does not shadow everything it lights.
-      float end = min(distance - max(2.0, 2.0 * shadowTanHalf * distance), maxDistance);
-      float shadow;
-      voxelConeTrace(origin, toLight, shadowTanHalf, start, end, 0.0, p, n, shadow);
-      float sf = attenuation * pow(max(dot(reflect(-toLight, n), -viewDir), 0.0), normalSpec.w);
-      shadowed += shadow * (df * albedo + sf * specular) * voxelLights[l].color.rgb;
-    }
-  }
+  vec3 shadowed = coneShadows != 0 ? occludedDirect(p, origin, n, viewDir, albedo, specular, normalSpec.w) : vec3(0.0);
   // Never let a non-finite value through.
   bool finite = !any(isnan(indirect)) && !any(isinf(indirect)) && !any(isnan(shadowed)) &&
     !any(isinf(shadowed)) && !isnan(ao);

@@ -1,7 +1,7 @@
 // Voxel direct lighting: outgoing radiance of every occupied voxel from the renderer's lights
 // (VTK's light model, normal-weighted attenuation of the deferred-voxel-shading technique,
 // occlusion by soft voxel shadows raymarched toward the light or, with VOXELGI_SHADOW_MAPS,
-// by the directional and spot lights' shadow maps) plus the voxel's emission.
+// by the lights' shadow maps) plus the voxel's emission.
 layout(local_size_x = VOXELGI_LOCAL_SIZE, local_size_y = VOXELGI_LOCAL_SIZE, local_size_z = VOXELGI_LOCAL_SIZE) in;
 
 #include "lights.glsl"
@@ -12,9 +12,7 @@ uniform sampler3D voxelEmission;
 uniform int hasEmission;
 uniform int voxelShadows; // raymarched occlusion (for lights without a shadow map)
 #ifdef VOXELGI_SHADOW_MAPS
-uniform sampler2DArrayShadow shadowMaps;
-uniform int shadowLayers[VOXELGI_MAX_LIGHTS];
-uniform mat4 shadowMatrices[VOXELGI_MAX_LIGHTS]; // grid -> the light's clip space
+#include "shadow_maps.glsl"
 #endif
 // Read too with keepIndirect (each invocation its own voxel, read before written).
 layout(rgba16f, binding = 0) uniform image3D radianceOut;
@@ -43,21 +41,6 @@ float voxelShadow(vec3 p, vec3 side, vec3 toLight, float distance)
   }
   return transmittance;
 }
-
-#ifdef VOXELGI_SHADOW_MAPS
-// Filtered depth comparison in light l's map, from just off the voxel's lit side.
-float voxelShadowMap(int l, vec3 p, vec3 side, vec3 toLight)
-{
-  vec4 clip = shadowMatrices[l] * vec4(p + side + toLight, 1.0);
-  vec3 ndc = clip.xyz / clip.w;
-  if (clip.w <= 0.0 || any(greaterThan(abs(ndc), vec3(1.0))))
-  {
-    return 1.0; // outside the light's view: nothing there casts a shadow
-  }
-  vec3 uvz = ndc * 0.5 + 0.5;
-  return texture(shadowMaps, vec4(uvz.xy, float(shadowLayers[l]), uvz.z));
-}
-#endif
 
 // Normal-weighted attenuation: per dominant voxel face, weighted by the squared components
 // of the averaged voxel normal. Zero normals (opposing surfaces in one voxel) use half.
@@ -101,9 +84,10 @@ void main()
       vec3 side = dot(n, n) < 0.25 ? toLight : (dot(n, toLight) >= 0.0 ? n : -n);
       float visibility = voxelShadows != 0 ? voxelShadow(p, side, toLight, distance) : 1.0;
 #ifdef VOXELGI_SHADOW_MAPS
-      if (shadowLayers[l] >= 0)
+      if (shadowMapped(l))
       {
-        visibility = voxelShadowMap(l, p, side, toLight);
+        // from just off the voxel's lit side
+        visibility = shadowMapVisibility(l, p + side + toLight);
       }
 #endif
       radiance += albedo.rgb * voxelLights[l].color.rgb * (attenuation * lambert * visibility);

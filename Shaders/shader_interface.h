@@ -5,6 +5,7 @@
 #define VOXELGI_SHADER_INTERFACE
 
 #define VOXELGI_MAX_LIGHTS 16 /* lights in the light block */
+#define VOXELGI_MAX_SHADOW_LAYERS 96 /* shadow maps: one per light, six for a point light */
 #define VOXELGI_MAX_CONES 16  /* diffuse cone directions */
 #define VOXELGI_LOCAL_SIZE 4  /* work group edge of the per-voxel compute stages */
 #define VOXELGI_HALF_MAX 65504.0 /* largest finite half float: RGBA16F results stay below */
@@ -12,6 +13,7 @@
 /* Uniform buffer binding points. */
 #define VOXELGI_LIGHT_BLOCK_BINDING 0 /* lights.glsl */
 #define VOXELGI_GRID_BLOCK_BINDING 1  /* voxel_grid.glsl */
+#define VOXELGI_SHADOW_BLOCK_BINDING 2 /* shadow_maps.glsl */
 
 /* Shader storage bindings 0, 1, ...: one per channel of the voxelization sums
    (voxel_common.glsl), count, albedo rgb, normal xyz, then when present emission rgb (the

@@ -4,6 +4,7 @@
 #include "GBufferPass.h"
 #include "GridView.h"
 #include "LightVoxels.h"
+#include "ShadowMaps.h"
 #include "VoxelGIShaders.h"
 #include "VoxelMipmap.h"
 #include "vtkVoxelGIPass.h"
@@ -55,7 +56,20 @@ bool ConeTrace::Prepare(const Frame& frame, std::string& error)
     }
   }
   this->Cones.Set(frame.Config, frame.Grid.Resolution);
-  return this->Program.BuildOnce(shaders::cone_trace_comp, "cone tracing", error);
+  // The shadow-map variant is compiled only when a scene uses it.
+  const bool withMaps = frame.Shadows && frame.Shadows->HasMaps() && frame.Config.ConeShadows;
+  if (!this->Program.IsReady() || withMaps != this->ProgramWithShadowMaps)
+  {
+    std::string log;
+    if (!this->Program.Build(
+          withMaps ? "#define VOXELGI_SHADOW_MAPS\n" : "", shaders::cone_trace_comp, log))
+    {
+      error = "cone tracing shader failed to build: " + log;
+      return false;
+    }
+    this->ProgramWithShadowMaps = withMaps;
+  }
+  return true;
 }
 
 void ConeTrace::SetUniforms(const Frame& frame)
@@ -131,6 +145,10 @@ void ConeTrace::Run(const Frame& frame)
   SamplerBindings samplers(frame.Window);
   SetConeTracingSamplers(
     p, samplers, frame.Lighting->GetRadiance(), *frame.Mipmap, 0.0f, this->Cones.StepFactor);
+  if (this->ProgramWithShadowMaps)
+  {
+    frame.Shadows->Bind(p, samplers);
+  }
   ScopedTextures inputs({ this->GBuffer.GetNormal(), this->GBuffer.GetMaterial(),
     this->GBuffer.GetDepth(), before.Indirect, before.Shadowed, before.Surface });
   this->HistoryValid = false;

@@ -2,7 +2,8 @@
  * ConeTrace stage (cone_trace.comp, a compute dispatch in 8x8 tiles): per pixel of the G-buffer, at the trace resolution
  * (TraceResolution of the image's), diffuse cones over the normal's hemisphere (indirect
  * diffuse and AO), one specular cone whose aperture follows the specular power, and a narrow
- * cone toward each light for soft shadows, through the radiance mipmaps. Outputs: indirect
+ * cone toward each light for soft shadows, through the radiance mipmaps (a scene light with a
+ * shadow map of the frame's, Frame::Shadows, is looked up there instead). Outputs: indirect
  * light + AO, and the part of VTK's direct shading the shadow cones find occluded.
  *
  * Temporal reuse: in a frame where only the camera changed (Frame::CameraOnly), one tile in
@@ -62,6 +63,7 @@ private:
   const GBufferPass& GBuffer;
   ConeSettings Cones;
   ComputeProgram Program;
+  bool ProgramWithShadowMaps = false;
   std::array<TraceImages, 2> History; // this frame's and the previous frame's
   int Current = 0;
   bool HistoryValid = false;

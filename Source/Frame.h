@@ -25,6 +25,7 @@ namespace voxelgi
 {
 class LightVoxels;
 class Ranks;
+class ShadowMaps;
 class VoxelMipmap;
 class VoxelizePass;
 
@@ -129,6 +130,9 @@ struct Frame
   const VoxelizePass* Voxelization = nullptr;
   const LightVoxels* Lighting = nullptr;
   const VoxelMipmap* Mipmap = nullptr;
+  /// The lights' shadow maps, where the pixels' shadows may use them (the pass's own lights
+  /// and voxels); else null.
+  const ShadowMaps* Shadows = nullptr;
   /// Whether the renderer has lights GI uses (else lit surfaces show only their ambient term).
   bool LitScene = true;
   /// Whether any voxelized actor is specular (else no specular cone).

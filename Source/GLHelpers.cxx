@@ -105,11 +105,6 @@ void ComputeProgram::SetVec3Array(const char* name, int count, const float* valu
   glUniform3fv(glGetUniformLocation(this->Handle, name), count, values);
 }
 
-void ComputeProgram::SetIntArray(const char* name, int count, const int* values)
-{
-  glUniform1iv(glGetUniformLocation(this->Handle, name), count, values);
-}
-
 void ComputeProgram::SetVec2(const char* name, float x, float y)
 {
   glUniform2f(glGetUniformLocation(this->Handle, name), x, y);

@@ -52,7 +52,6 @@ public:
   void SetInt(const char* name, int value);
   void SetFloat(const char* name, float value);
   void SetVec3Array(const char* name, int count, const float* values);
-  void SetIntArray(const char* name, int count, const int* values);
   void SetVec2(const char* name, float x, float y);
   void SetVec4(const char* name, const float* values);
   /// Column-major 4x4 matrices.

@@ -82,9 +82,7 @@ void LightVoxels::Run(const Frame& frame, bool keepIndirect)
   p.SetInt("voxelShadows", this->VoxelShadows ? 1 : 0);
   if (this->ProgramWithShadowMaps)
   {
-    p.SetInt("shadowMaps", samplers.Add(this->Shadows.Maps));
-    p.SetIntArray("shadowLayers", ShadowMaps::MaxLights, this->Shadows.GetLayers());
-    p.SetMat4Array("shadowMatrices", ShadowMaps::MaxLights, this->Shadows.GetMatrices());
+    this->Shadows.Bind(p, samplers);
   }
   if (!(samplers.Complete()))
   {

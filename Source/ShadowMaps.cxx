@@ -20,16 +20,34 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace voxelgi
 {
 
 namespace
 {
+// A point light's cube faces see a little beyond 90 degrees, so that a filter's taps near a
+// face's edge stay on that face.
+constexpr double CubeFaceTan = 1.05;
+
+// Layers of a light's map: none for a headlight, six cube faces for a point light (a
+// positional light whose cone is 90 degrees or wider), else one.
+int LayerCount(vtkLight* light)
+{
+  if (!light || light->LightTypeIsHeadlight())
+  {
+    return 0;
+  }
+  return light->GetPositional() && light->GetConeAngle() >= 90.0 ? 6 : 1;
+}
+
 // Aim `camera` from the light over the grid and give it an explicit projection: orthographic
 // over the grid's bounding sphere for a directional light, a perspective frustum of the
-// spot's cone for a spot light.
-void AimLightCamera(vtkCamera* camera, vtkLight* light, const VoxelGrid& grid)
+// spot's cone for a spot light, and of cube face `face` (+x -x +y -y +z -z) for a point
+// light. Returns the width of a map texel of `size` in voxels: x + y * distance.
+glm::dvec2 AimLightCamera(
+  vtkCamera* camera, vtkLight* light, const VoxelGrid& grid, int face, int size)
 {
   const glm::dvec3 center = grid.Center();
   const double radius = 0.5 * std::sqrt(3.0) * grid.Size();
@@ -38,8 +56,15 @@ void AimLightCamera(vtkCamera* camera, vtkLight* light, const VoxelGrid& grid)
   light->GetTransformedFocalPoint(focal);
   glm::dvec3 dir(focal[0] - position[0], focal[1] - position[1], focal[2] - position[2]);
   dir = glm::length(dir) > 0.0 ? glm::normalize(dir) : glm::dvec3(0, 0, -1);
-  const glm::dvec3 up = std::abs(dir.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
+  const bool cube = LayerCount(light) == 6;
+  if (cube)
+  {
+    dir = glm::dvec3(0.0);
+    dir[face / 2] = face % 2 == 0 ? 1.0 : -1.0;
+  }
+  const glm::dvec3 up = std::abs(dir.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(0, 0, 1);
   vtkNew<vtkMatrix4x4> projection;
+  glm::dvec2 texel(0.0);
   if (!light->GetPositional())
   {
     const glm::dvec3 eye = center - dir * (2.0 * radius);
@@ -50,6 +75,7 @@ void AimLightCamera(vtkCamera* camera, vtkLight* light, const VoxelGrid& grid)
     projection->SetElement(1, 1, 1.0 / radius);
     projection->SetElement(2, 2, -1.0 / radius);
     projection->SetElement(2, 3, -2.0);
+    texel.x = 2.0 * radius / (size * grid.VoxelSize);
   }
   else
   {
@@ -59,18 +85,46 @@ void AimLightCamera(vtkCamera* camera, vtkLight* light, const VoxelGrid& grid)
     camera->SetFocalPoint(target.x, target.y, target.z);
     const double farPlane = glm::length(center - eye) + radius;
     const double nearPlane = std::max(farPlane * 1e-3, 1e-6 * radius);
-    const double f =
-      1.0 / std::tan(vtkMath::RadiansFromDegrees(std::min(light->GetConeAngle() + 2.0, 89.0)));
-    projection->SetElement(0, 0, f);
-    projection->SetElement(1, 1, f);
+    const double tanHalf = cube
+      ? CubeFaceTan
+      : std::tan(vtkMath::RadiansFromDegrees(std::min(light->GetConeAngle() + 2.0, 89.0)));
+    projection->SetElement(0, 0, 1.0 / tanHalf);
+    projection->SetElement(1, 1, 1.0 / tanHalf);
     projection->SetElement(2, 2, (farPlane + nearPlane) / (nearPlane - farPlane));
     projection->SetElement(2, 3, 2.0 * farPlane * nearPlane / (nearPlane - farPlane));
     projection->SetElement(3, 2, -1.0);
     projection->SetElement(3, 3, 0.0);
+    texel.y = 2.0 * tanHalf / size;
   }
   camera->SetViewUp(up.x, up.y, up.z);
   camera->SetExplicitProjectionTransformMatrix(projection);
   camera->SetUseExplicitProjectionTransformMatrix(true);
+  return texel;
+}
+
+// Whether the box `bounds` (world) lies wholly outside one side plane or behind the near
+// plane of the view whose clip coordinates `clipFromWorld` gives (the planes are linear in
+// clip space, so the corners decide, whatever their w).
+bool OutsideView(const double* bounds, vtkMatrix4x4* clipFromWorld)
+{
+  if (!bounds || !vtkMath::AreBoundsInitialized(bounds))
+  {
+    return false;
+  }
+  int outside[5] = { 0, 0, 0, 0, 0 }; // corners beyond x = w, x = -w, y = w, y = -w, z = -w
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    const double world[4] = { bounds[corner & 1], bounds[2 + ((corner >> 1) & 1)],
+      bounds[4 + ((corner >> 2) & 1)], 1.0 };
+    double clip[4];
+    clipFromWorld->MultiplyPoint(world, clip);
+    outside[0] += clip[0] > clip[3];
+    outside[1] += -clip[0] > clip[3];
+    outside[2] += clip[1] > clip[3];
+    outside[3] += -clip[1] > clip[3];
+    outside[4] += clip[2] < -clip[3];
+  }
+  return std::any_of(outside, outside + 5, [](int n) { return n == 8; });
 }
 }
 
@@ -81,21 +135,32 @@ bool ShadowMaps::Prepare(const Frame& frame, const LightBlock& lights, std::stri
   for (std::size_t l = 0; l < MaxLights; ++l)
   {
     vtkLight* light = l < used.size() ? used[l] : nullptr;
-    const bool shadowed = light && !light->LightTypeIsHeadlight() &&
-      (!light->GetPositional() || light->GetConeAngle() < 90.0);
-    this->Layers[l] = shadowed ? count++ : -1;
+    const int layers = LayerCount(light);
+    int* entry = this->Data.Lights + 4 * l;
+    entry[0] = layers > 0 ? count : -1;
+    entry[1] = layers;
+    entry[2] = layers > 0 && light->LightTypeIsSceneLight() ? 1 : 0;
+    entry[3] = 0;
+    count += layers;
   }
   if (count == 0)
   {
     this->Maps.Release();
     return true;
   }
-  if (!this->Maps.Allocate(frame.Config.ShadowMapResolution, count))
+  if (!this->Maps.Allocate(frame.Config.ShadowMapResolution, count) ||
+    !(this->Buffer.IsAllocated() || this->Buffer.Allocate(sizeof(Block))))
   {
     error = "could not allocate the shadow maps";
     return false;
   }
   return true;
+}
+
+void ShadowMaps::Bind(ComputeProgram& program, SamplerBindings& samplers) const
+{
+  program.SetInt("shadowMaps", samplers.Add(this->Maps));
+  this->Buffer.BindUniform(VOXELGI_SHADOW_BLOCK_BINDING);
 }
 
 void ShadowMaps::Run(const Frame& frame, const LightBlock& lights)
@@ -126,44 +191,49 @@ void ShadowMaps::Run(const Frame& frame, const LightBlock& lights)
     ostate->vtkglEnable(GL_DEPTH_TEST);
     ostate->vtkglDepthFunc(GL_LEQUAL);
     ostate->vtkglDepthMask(GL_TRUE);
+    // world <- grid, composed in double with each layer's clip <- world
+    vtkNew<vtkMatrix4x4> worldFromGrid;
+    for (int a = 0; a < 3; ++a)
+    {
+      worldFromGrid->SetElement(a, a, grid.VoxelSize);
+      worldFromGrid->SetElement(a, 3, grid.Origin[a]);
+    }
     for (std::size_t l = 0; l < used.size() && l < MaxLights; ++l)
     {
-      if (this->Layers[l] < 0)
+      const int first = this->Data.Lights[4 * l];
+      for (int face = 0; face < this->Data.Lights[4 * l + 1]; ++face)
       {
-        continue;
-      }
-      AimLightCamera(camera, used[l], grid);
-      ostate->vtkglBindFramebuffer(GL_FRAMEBUFFER, this->Maps.PrepareLayer(this->Layers[l]));
-      ostate->vtkglClearDepth(1.0);
-      ostate->vtkglClear(GL_DEPTH_BUFFER_BIT);
-      for (const ActorRecord& record : *frame.Actors)
-      {
-        if (record.Actor)
+        const glm::dvec2 texel = AimLightCamera(camera, used[l], grid, face, size);
+        this->Data.Texels[4 * l] = static_cast<float>(texel.x);
+        this->Data.Texels[4 * l + 1] = static_cast<float>(texel.y);
+        ostate->vtkglBindFramebuffer(GL_FRAMEBUFFER, this->Maps.PrepareLayer(first + face));
+        ostate->vtkglClearDepth(1.0);
+        ostate->vtkglClear(GL_DEPTH_BUFFER_BIT);
+        vtkNew<vtkMatrix4x4> clipFromWorld;
+        clipFromWorld->DeepCopy(camera->GetCompositeProjectionTransformMatrix(1.0, -1, 1));
+        // Each draw costs CPU time in VTK's mapper: a cube face draws only the actors it sees.
+        for (const ActorRecord& record : *frame.Actors)
         {
-          this->Copies.Draw(record.Actor, renderer);
+          if (record.Actor && !OutsideView(record.Actor->GetBounds(), clipFromWorld))
+          {
+            this->Copies.Draw(record.Actor, renderer);
+          }
         }
-      }
-      // clip <- world <- grid, composed in double
-      vtkNew<vtkMatrix4x4> clipFromWorld;
-      clipFromWorld->DeepCopy(camera->GetCompositeProjectionTransformMatrix(1.0, -1, 1));
-      vtkNew<vtkMatrix4x4> worldFromGrid;
-      for (int a = 0; a < 3; ++a)
-      {
-        worldFromGrid->SetElement(a, a, grid.VoxelSize);
-        worldFromGrid->SetElement(a, 3, grid.Origin[a]);
-      }
-      vtkNew<vtkMatrix4x4> clipFromGrid;
-      vtkMatrix4x4::Multiply4x4(clipFromWorld, worldFromGrid, clipFromGrid);
-      for (int r = 0; r < 4; ++r)
-      {
-        for (int c = 0; c < 4; ++c)
+        vtkNew<vtkMatrix4x4> clipFromGrid;
+        vtkMatrix4x4::Multiply4x4(clipFromWorld, worldFromGrid, clipFromGrid);
+        float* matrix = this->Data.Matrices + 16 * (first + face);
+        for (int r = 0; r < 4; ++r)
         {
-          this->Matrices[16 * l + 4 * c + r] = static_cast<float>(clipFromGrid->GetElement(r, c));
+          for (int c = 0; c < 4; ++c)
+          {
+            matrix[4 * c + r] = static_cast<float>(clipFromGrid->GetElement(r, c));
+          }
         }
       }
     }
   }
   ostate->PopFramebufferBindings();
+  this->Buffer.Upload(&this->Data, sizeof(Block));
   this->Copies.Retain(*frame.Actors, frame.Window);
 }
 

@@ -414,6 +414,7 @@ bool vtkVoxelGIPass::BeginFrame(vtkRenderer* renderer, const vtkRenderState* s)
   frame.Voxelization = in.Voxelize;
   frame.Lighting = &in.Lighting;
   frame.Mipmap = &in.Mipmap;
+  frame.Shadows = &in.Shadows;
   frame.Renderer->GetTiledSizeAndOrigin(&frame.Width, &frame.Height, &frame.X, &frame.Y);
   frame.Config = voxelgi::Snapshot(this, in.HasConservativeRaster);
   return this->ViewportFits();
@@ -891,6 +892,9 @@ bool vtkVoxelGIPass::FollowSource(bool& changed)
     return false;
   }
   in.GridBlock.Bind(frame.Grid);
+  // The source's shadow maps are of its lights: they serve this renderer's pixels when it
+  // has the same lights (viewports on one scene), else its shadows are traced.
+  frame.Shadows = in.Lights.GetLights() == shared.Lights.GetLights() ? &shared.Shadows : nullptr;
   // This renderer's lights shade VTK's image and aim the shadow cones; the voxels are lit by
   // the source's. Camera lights turning with this camera make a camera move.
   changed = shared.RadianceGeneration != in.TracedGeneration ||

@@ -191,12 +191,14 @@ public:
   /**
    * How the voxel lighting finds what the lights do not reach. VOXEL_SHADOWS: each voxel
    * marches toward every light through the voxel occupancy (soft voxel shadows).
-   * SHADOW_MAPS: directional and spot lights render a depth map from the geometry
-   * (ShadowMapResolution), sharper than the voxels; point lights still raymarch, and so do
-   * all lights of a distributed render (a rank's maps would see its own piece only). NONE:
-   * every voxel facing a light is lit. Default: LIGHT_OCCLUSION_SHADOW_MAPS (the error study:
-   * FLIP against Cycles 0.145 -> 0.124 in the glyph field under a sun, 0.167 -> 0.157 under
-   * the stream tubes, for 0.3 ms of ShadowMaps per relight on the atrium at 1080p).
+   * SHADOW_MAPS: every light but a headlight renders depth maps from the geometry
+   * (ShadowMapResolution; one for a directional or spot light, the six faces of a cube for a
+   * point light), sharper than the voxels, and the pixels' shadows of scene lights are read
+   * from the same maps (ConeShadows); all lights of a distributed render raymarch (a rank's
+   * maps would see its own piece only). NONE: every voxel facing a light is lit. Default:
+   * LIGHT_OCCLUSION_SHADOW_MAPS (the error study: FLIP against Cycles 0.145 -> 0.124 in the
+   * glyph field under a sun, 0.167 -> 0.157 under the stream tubes, for 0.3 ms of ShadowMaps
+   * per relight on the atrium at 1080p).
    */
   vtkSetClampMacro(LightOcclusion, int, LIGHT_OCCLUSION_NONE, LIGHT_OCCLUSION_SHADOW_MAPS);
   vtkGetMacro(LightOcclusion, int);
@@ -375,8 +377,13 @@ public:
 
   ///@{
   /**
-   * Cone-traced soft shadows for the lights (headlights excepted): the occluded part of
-   * each light's contribution is removed from VTK's shading. Default: on.
+   * Shadows of the lights (headlights excepted) in the pixels: the occluded part of each
+   * light's contribution is removed from VTK's shading. A scene light with a shadow map
+   * (LightOcclusion SHADOW_MAPS) is looked up there, filtered over 3 x 3 texels; other lights
+   * (camera lights, whose maps lag while they turn, every light of a distributed render, and
+   * the lights of a pass that shares another's voxels unless they are the other's lights)
+   * trace a cone through the voxels
+   * (ShadowConeAperture). Default: on.
    */
   vtkSetMacro(ConeShadows, vtkTypeBool);
   vtkGetMacro(ConeShadows, vtkTypeBool);
@@ -385,7 +392,8 @@ public:
 
   ///@{
   /**
-   * Full aperture of the shadow cones in degrees, in [0.5, 60]: wider is softer. Default: 1
+   * Full aperture of the shadow cones (lights without a pixel shadow map, see ConeShadows) in
+   * degrees, in [0.5, 60]: wider is softer. Default: 1
    * (the error study: the sharpest shadows are the closest to Cycles' in every lit scene;
    * 6 -> 1 took the isosurface room's FLIP 0.326 -> 0.280 and the stream tubes' 0.167 ->
    * 0.127, for +0.06 to +0.2 ms of ConeTrace per 1080p frame).

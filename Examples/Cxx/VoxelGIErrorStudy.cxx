@@ -126,8 +126,8 @@ int main(int argc, char* argv[])
     { "DiffuseConeAperture", { 30, 45, 90 } }, { "ConeStepFactor", { 0.35, 0.5, 1.0, 1.5 } },
     { "Bounces", { 0, 1, 2, 6 } }, { "TraceResolution", { 0.5, 0.25 } }, { "TemporalReuse", { 0 } },
     { "AnisotropicMipmaps", { 0 } }, { "AmbientOcclusionStrength", { 0, 0.5 } },
-    { "SpecularCone", { 0 } }, { "ShadowConeAperture", { 1, 2, 3, 12 } },
-    { "LightOcclusion", { 0, 2 } } };
+    { "SpecularCone", { 0 } }, { "LightOcclusion", { 0, 1 } },
+    { "ShadowMapResolution", { 512, 2048 } } };
   constexpr double OrbitStep = 2.0;
   constexpr int OrbitSteps = 46;
   if (cameraLights)

@@ -4,7 +4,10 @@
 //     grows with the bounces toward the analytic E / (1 - rho) and never exceeds it;
 //  3. direct voxel light on a plane from a positional light: Lambert x VTK's attenuation;
 //  4. a block floating over a floor under a directional light: the floor in its shadow gets
-//     no direct light, with voxel shadows and with shadow maps alike.
+//     no direct light, with voxel shadows and with shadow maps alike;
+//  5. the same block under a point light (a cube of shadow maps), seen from straight above:
+//     the voxels in its shadow get no light, and the pixels' shadow edge lies where the
+//     block's edge projects, straight along the edge (no voxel steps).
 #include "VoxelGITestUtilities.h"
 #include "vtkVoxelGIPass.h"
 #include "vtkVoxelGIScenes.h"
@@ -23,6 +26,7 @@
 #include "vtkRenderer.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 
 namespace
@@ -226,12 +230,86 @@ int ShadowedFloor()
   }
   return EXIT_SUCCESS;
 }
+
+int PointLightShadow()
+{
+  vtkNew<vtkRenderer> renderer;
+  voxelgi_test::AddQuad(renderer, dvec3(-3, 0, -3), dvec3(-3, 0, 3), dvec3(3, 0, -3), 0.8, 0.8, 0.8);
+  vtkNew<vtkCubeSource> cube;
+  cube->SetBounds(-1.0, 1.0, 1.5, 2.0, -1.0, 1.0);
+  vtkVoxelGIScenes::AddSource(renderer, cube, 0.8, 0.8, 0.8);
+  const dvec3 lamp(0.0, 5.0, 0.0);
+  vtkNew<vtkLight> light;
+  light->SetLightTypeToSceneLight();
+  light->SetPositional(true);
+  light->SetConeAngle(90.0);
+  light->SetPosition(lamp.x, lamp.y, lamp.z);
+  light->SetFocalPoint(0.0, 0.0, 0.0);
+  renderer->AddLight(light);
+  // Straight down, parallel: image x is world x, image rows run along -z; 7 units over 200
+  // pixels.
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->ParallelProjectionOn();
+  camera->SetPosition(0.0, 10.0, 0.0);
+  camera->SetFocalPoint(0.0, 0.0, 0.0);
+  camera->SetViewUp(0.0, 0.0, -1.0);
+  camera->SetParallelScale(3.5);
+  renderer->ResetCameraClippingRange();
+  vtkNew<vtkRenderWindow> window;
+  window->SetSize(200, 200);
+  window->AddRenderer(renderer);
+  vtkNew<vtkVoxelGIPass> gi;
+  gi->SetVoxelResolution(64);
+  gi->SetBounces(0);
+  renderer->SetPass(gi);
+  window->Render();
+  VOXELGI_CHECK(gi->GetGIActive(), "GI did not run");
+  VOXELGI_CHECK(gi->GetStageRan(vtkVoxelGIPass::STAGE_SHADOW_MAPS), "no shadow maps");
+
+  vtkNew<vtkImageData> radiance;
+  VOXELGI_CHECK(gi->GetVoxelVolume(vtkVoxelGIPass::VOLUME_RADIANCE, radiance), "no radiance");
+  vtkDataArray* values = radiance->GetPointData()->GetScalars();
+  const double shadowedVoxel = values->GetComponent(radiance->FindPoint(1.3, 0.01, 0.0), 0);
+  const dvec3 litPoint(2.5, 0.0, 2.0);
+  const double litVoxel = values->GetComponent(radiance->FindPoint(litPoint.x, 0.01, litPoint.z), 0);
+  const double lambert = 0.8 * glm::normalize(lamp - litPoint).y;
+  std::cout << "point light: floor voxel radiance in the shadow " << shadowedVoxel
+            << ", in the light " << litVoxel << " (Lambert: " << lambert << ")" << std::endl;
+  VOXELGI_CHECK(shadowedVoxel < 0.01, "voxel light through the block");
+  VOXELGI_CHECK(std::abs(litVoxel - lambert) < 0.02 * lambert, "lit voxel differs from Lambert");
+
+  // The top face's edge x = 1 casts the shadow's edge on the floor at x = 1 * 5 / (5 - 2).
+  vtkNew<vtkFloatArray> image;
+  VOXELGI_CHECK(gi->GetFloatImage(vtkVoxelGIPass::IMAGE_COMPOSITE, image), "no image");
+  const double edge = lamp.y / (lamp.y - 2.0);
+  const double unitsPerPixel = 7.0 / 200.0;
+  auto pixel = [&](double x, double z) {
+    const int i = static_cast<int>(std::floor((x + 3.5) / unitsPerPixel));
+    const int j = static_cast<int>(std::floor((-z + 3.5) / unitsPerPixel));
+    return static_cast<double>(image->GetComponent(j * 200 + i, 0));
+  };
+  double worstInside = 0.0, worstOutside = 1e30;
+  for (double z = -0.9; z <= 0.9; z += unitsPerPixel)
+  {
+    // two pixels either side of the edge
+    worstInside = std::max(worstInside, pixel(edge - 2.0 * unitsPerPixel, z));
+    const dvec3 outside(edge + 2.0 * unitsPerPixel, 0.0, z);
+    worstOutside =
+      std::min(worstOutside, pixel(outside.x, z) / (0.8 * glm::normalize(lamp - outside).y));
+  }
+  std::cout << "point light: two pixels inside the shadow's edge at most " << worstInside
+            << ", two pixels outside at least " << worstOutside << " of Lambert" << std::endl;
+  VOXELGI_CHECK(worstInside < 0.05, "light inside the shadow's edge: edge misplaced or ragged");
+  VOXELGI_CHECK(worstOutside > 0.95, "shadow outside its edge: edge misplaced or ragged");
+  return EXIT_SUCCESS;
+}
 }
 
 int TestGINumerics(int, char*[])
 {
   if (LitPlaneAlone() != EXIT_SUCCESS || Furnace() != EXIT_SUCCESS ||
-    DirectLightOnPlane() != EXIT_SUCCESS || ShadowedFloor() != EXIT_SUCCESS)
+    DirectLightOnPlane() != EXIT_SUCCESS || ShadowedFloor() != EXIT_SUCCESS ||
+    PointLightShadow() != EXIT_SUCCESS)
   {
     return EXIT_FAILURE;
   }

@@ -127,14 +127,13 @@ int TestGITemporalReuse(int, char*[])
     }
   }
   VOXELGI_CHECK(worst[0][0] < 0.01, "the box left a trail: largest difference " << worst[0][0]);
-  // Measured (llvmpipe): mean <= 0.0025, up to 8 % of the pixels over 0.02, largest 0.66, where
-  // the traced light varies sharply within a voxel (stripes and shadow edges of this coarse
-  // 32^3 grid, a voxel about five pixels wide; the direct light's cone shadows are at full
-  // contrast and, with 1-degree cones, as sharp as the voxels allow); finer grids per pixel
-  // resample less.
-  VOXELGI_CHECK(worst[1][1] < 0.004, "reuse moved the image: mean difference " << worst[1][1]);
-  VOXELGI_CHECK(worst[1][2] < 0.12, "reuse changed " << 100.0 * worst[1][2] << " % of pixels");
-  VOXELGI_CHECK(worst[1][0] < 0.7, "a reused pixel is far from its traced value: " << worst[1][0]);
+  // Measured (llvmpipe): mean <= 0.0017, up to 6.8 % of the pixels over 0.02, largest 0.50,
+  // where the traced light varies sharply within a voxel (stripes of this coarse 32^3 grid, a
+  // voxel about five pixels wide); the scene light's shadows come from its shadow map and are
+  // looked up afresh in reused tiles (resampled, their sharp edges gave up to 0.72).
+  VOXELGI_CHECK(worst[1][1] < 0.0025, "reuse moved the image: mean difference " << worst[1][1]);
+  VOXELGI_CHECK(worst[1][2] < 0.09, "reuse changed " << 100.0 * worst[1][2] << " % of pixels");
+  VOXELGI_CHECK(worst[1][0] < 0.6, "a reused pixel is far from its traced value: " << worst[1][0]);
 
   // A change of the lights relights the voxels: everything is traced again.
   for (View* view : { &reused, &traced })
