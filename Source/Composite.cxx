@@ -52,6 +52,9 @@ void Composite::Run(const Frame& frame)
   float gridFromNDC[16];
   GridFromNDC(frame.Renderer, frame.Grid, gridFromNDC);
   p.SetMat4Array("voxelFromNDC", 1, gridFromNDC);
+  float normalToGrid[9];
+  NormalToGrid(frame.Renderer, normalToGrid);
+  p.SetMat3("normalToGrid", normalToGrid);
   p.SetInt("gbufferColor", this->GBuffer.GetColor()->GetTextureUnit());
   p.SetInt("gbufferNormal", this->GBuffer.GetNormal()->GetTextureUnit());
   p.SetInt("gbufferAmbient", this->GBuffer.GetAmbient()->GetTextureUnit());

@@ -11,7 +11,6 @@
 
 #include "vtkCamera.h"
 #include "vtkMath.h"
-#include "vtkMatrix4x4.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtk_glew.h"
@@ -80,16 +79,8 @@ void ConeTrace::SetUniforms(const Frame& frame)
   // Kept for the next frame's reprojection (after SetHistoryUniforms used the last ones).
   GridFromNDC(frame.Renderer, frame.Grid, this->PreviousGridFromNDC, this->PreviousNDCFromGrid);
   p.SetMat4Array("voxelFromNDC", 1, this->PreviousGridFromNDC);
-  vtkMatrix4x4* view = frame.Renderer->GetActiveCamera()->GetViewTransformMatrix();
   float normalToGrid[9];
-  for (int r = 0; r < 3; ++r)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      // inverse of the rotation = its transpose; GLSL matrices are column-major
-      normalToGrid[c * 3 + r] = static_cast<float>(view->GetElement(c, r));
-    }
-  }
+  NormalToGrid(frame.Renderer, normalToGrid);
   p.SetMat3("normalToGrid", normalToGrid);
   p.SetInt("gbufferNormal", this->GBuffer.GetNormal()->GetTextureUnit());
   p.SetInt("gbufferMaterial", this->GBuffer.GetMaterial()->GetTextureUnit());

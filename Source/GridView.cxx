@@ -50,4 +50,17 @@ void GridFromNDC(
   }
 }
 
+void NormalToGrid(vtkRenderer* renderer, float columnMajor[9])
+{
+  vtkMatrix4x4* view = renderer->GetActiveCamera()->GetViewTransformMatrix();
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      // inverse of the rotation = its transpose
+      columnMajor[c * 3 + r] = static_cast<float>(view->GetElement(c, r));
+    }
+  }
+}
+
 }

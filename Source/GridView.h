@@ -16,6 +16,10 @@ struct VoxelGrid;
 void GridFromNDC(vtkRenderer* renderer, const VoxelGrid& grid, float columnMajor[16],
   float ndcFromGrid[16] = nullptr);
 
+/// Column-major 3x3 (for glUniformMatrix3fv) from the camera's view-space normals (the
+/// G-buffer's) to grid directions: the inverse of the view rotation.
+void NormalToGrid(vtkRenderer* renderer, float columnMajor[9]);
+
 }
 
 #endif

@@ -311,11 +311,12 @@ int FurnaceCase(bool defaults)
       std::cerr << "FAILED: " << label << ": pixels darker with more bounces" << std::endl;
       ok = false;
     }
-    // every pixel within a few percent of the series at this bounce count (measured: 0.168,
-    // the box's corners; the same at the defaults: AO leaves the emitters' light alone; it
-    // was 0.376 while AO multiplied all of VTK's colour)
+    // every pixel within a few percent of the series at this bounce count (measured: 0.132,
+    // the box's corners; 0.168 before the composite gathered over the cone turns; the same
+    // at the defaults: AO leaves the emitters' light alone; it was 0.376 while AO multiplied
+    // all of VTK's colour)
     ok = Within(std::string(label) + ", " + std::to_string(bounces) +
-           " bounces, largest relative error", worst, 0.03, 0.2) && ok;
+           " bounces, largest relative error", worst, 0.03, 0.16) && ok;
     // measured: mean 0.991 of the series, with AO off and at the defaults (0.911 while a
     // cone's last sample read a wall obliquely and cones stopped at one grid size; 0.741
     // before that)
@@ -467,9 +468,10 @@ int LitByFloorCase()
               << " (min " << band[b].Min << "), expected " << truthBand[b].Mean()
               << ", ratio " << band[b].Mean() / truthBand[b].Mean() << std::endl;
     // second-order light (face -> floor -> face) adds a few percent to the expectation;
-    // measured: 1.13 (top) .. 1.43 (next to the floor, seen too early through wide samples)
+    // measured: 1.05 .. 1.07 (top) .. 1.36 (next to the floor, seen too early through wide
+    // samples)
     ok = Within("lit by the floor, error at height " + std::to_string((b + 0.5) * 1.5 / bands),
-           std::abs(band[b].Mean() / truthBand[b].Mean() - 1.0), 0.25, 0.5) && ok;
+           std::abs(band[b].Mean() / truthBand[b].Mean() - 1.0), 0.25, 0.42) && ok;
   }
   if (ratio.Min < 0.5)
   {
@@ -619,10 +621,11 @@ int ThinWallCase()
   std::cout << "dark room next to a room of emission " << E << " through a wall of "
             << view.GI->GetGridVoxelSize() << " thick (one voxel): pixels mean "
             << all.Mean() << ", max " << all.Max << " (physically 0)" << std::endl;
-  // measured: mean 0.009, max 0.20 where the shared wall meets the dark room's other walls
-  // (the wall's middle stays dark: the directional mipmaps keep its two sides apart)
+  // measured: mean 0.009, max 0.092 (0.20 before the composite gathered over neighbours)
+  // where the shared wall meets the dark room's other walls (the wall's middle stays dark:
+  // the directional mipmaps keep its two sides apart)
   return Within("thin wall, mean light in the dark room / E", all.Mean() / E, 0.01, 0.01) &&
-      Within("thin wall, brightest pixel in the dark room / E", all.Max / E, 0.05, 0.25)
+      Within("thin wall, brightest pixel in the dark room / E", all.Max / E, 0.05, 0.12)
     ? EXIT_SUCCESS
     : EXIT_FAILURE;
 }
@@ -691,10 +694,11 @@ int WallStripesCase()
   std::cout << "back wall: " << level.N << " pixels, mean " << level.Mean() << ", min "
             << level.Min << ", max " << level.Max << "; RMS difference from the 9 x 9 mean "
             << roughness << " of the mean" << std::endl;
-  // measured: 0.030 with sixteen cones (0.059 with six, whose sparse directions pick the thin
-  // panel's light up in streaks)
+  // measured: 0.015 with sixteen cones turned four ways over each 2 x 2 pixels (0.030 with
+  // one fixed set, whose directions pick the thin panel's light up in spots and streaks; 0.013
+  // with a single cone along the normal: the coarse mips' trilinear interpolation)
   return Within("wall stripes, RMS difference from the neighbourhood / mean", roughness, 0.01,
-           0.035)
+           0.018)
     ? EXIT_SUCCESS
     : EXIT_FAILURE;
 }

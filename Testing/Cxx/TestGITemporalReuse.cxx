@@ -127,13 +127,15 @@ int TestGITemporalReuse(int, char*[])
     }
   }
   VOXELGI_CHECK(worst[0][0] < 0.01, "the box left a trail: largest difference " << worst[0][0]);
-  // Measured (llvmpipe): mean <= 0.0017, up to 6.8 % of the pixels over 0.02, largest 0.50,
-  // where the traced light varies sharply within a voxel (stripes of this coarse 32^3 grid, a
-  // voxel about five pixels wide); the scene light's shadows come from its shadow map and are
-  // looked up afresh in reused tiles (resampled, their sharp edges gave up to 0.72).
-  VOXELGI_CHECK(worst[1][1] < 0.0025, "reuse moved the image: mean difference " << worst[1][1]);
-  VOXELGI_CHECK(worst[1][2] < 0.09, "reuse changed " << 100.0 * worst[1][2] << " % of pixels");
-  VOXELGI_CHECK(worst[1][0] < 0.6, "a reused pixel is far from its traced value: " << worst[1][0]);
+  // Measured (llvmpipe): mean <= 0.0012, up to 0.42 % of the pixels over 0.02, largest 0.24,
+  // where the traced light varies sharply within a voxel of this coarse 32^3 grid (a voxel
+  // about five pixels wide). The scene light's shadows come from its shadow map and are looked
+  // up afresh in reused tiles (resampled, their sharp edges gave up to 0.72); the composite
+  // gathers the indirect light over the four cone turns of each 2 x 2 block (before, one
+  // fixed cone set: largest 0.50, 6.8 % of the pixels).
+  VOXELGI_CHECK(worst[1][1] < 0.0015, "reuse moved the image: mean difference " << worst[1][1]);
+  VOXELGI_CHECK(worst[1][2] < 0.01, "reuse changed " << 100.0 * worst[1][2] << " % of pixels");
+  VOXELGI_CHECK(worst[1][0] < 0.3, "a reused pixel is far from its traced value: " << worst[1][0]);
 
   // A change of the lights relights the voxels: everything is traced again.
   for (View* view : { &reused, &traced })
