@@ -102,7 +102,8 @@ ${properties}      <IntVectorProperty name=\"GIActive\" command=\"GetGIActive\" 
         base_proxygroup=\"views\" base_proxyname=\"RenderView\">
       <Documentation>
         A render view with real-time voxel global illumination: indirect diffuse and specular
-        light, ambient occlusion and soft shadows from cone tracing voxelized geometry.
+        light and ambient occlusion from cone tracing voxelized geometry, and the lights'
+        shadows.
       </Documentation>
       <SubProxy command=\"SetGIPass\">
         <Proxy name=\"VoxelGI\" proxygroup=\"voxelgi\" proxyname=\"VoxelGIPass\" />

@@ -1,9 +1,10 @@
 /**
  * Composite stage (composite.comp, a compute dispatch in 8x8 tiles): at the image's
- * resolution, VTK's shading
- * (the direct term) minus what the shadow cones found occluded, darkened by AO, plus the
- * indirect light, upsampled edge-aware from the trace resolution, into a float image (and an
- * indirect + AO image, and the clamped RGBA8 display image that Present draws).
+ * resolution, VTK's shading (the direct term) minus what the lights' shadows take away, its
+ * ambient term darkened by AO, plus the indirect light, gathered from the traced samples of
+ * the same surface around each pixel (a tent that weighs the trace's four cone turns alike;
+ * the shadows bilinear), into a float image (and an indirect + AO image, and the clamped
+ * RGBA8 display image that Present draws).
  */
 #ifndef VoxelGIComposite_h
 #define VoxelGIComposite_h

@@ -2,9 +2,11 @@
  * ConeTrace stage (cone_trace.comp, a compute dispatch in 8x8 tiles): per pixel of the G-buffer, at the trace resolution
  * (TraceResolution of the image's), diffuse cones over the normal's hemisphere (indirect
  * diffuse and AO), one specular cone whose aperture follows the specular power, and a narrow
- * cone toward each light for soft shadows, through the radiance mipmaps (a scene light with a
- * shadow map of the frame's, Frame::Shadows, is looked up there instead). Outputs: indirect
- * light + AO, and the part of VTK's direct shading the shadow cones find occluded.
+ * cone toward each light for its shadow, through the radiance mipmaps (a scene light with a
+ * shadow map of the frame's, Frame::Shadows, is looked up there instead). The diffuse cone
+ * set turns by a quarter turn from pixel to pixel of each 2 x 2 block (Composite gathers over
+ * the four turns). Outputs: indirect light + AO, and the part of VTK's direct shading the
+ * shadows take away.
  *
  * Temporal reuse: in a frame where only the camera changed (Frame::CameraOnly), one tile in
  * four (rotating) is traced and the others take last frame's result at the surface's

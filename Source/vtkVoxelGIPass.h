@@ -11,10 +11,11 @@
  * VTK shows. Rasterization is conservative (no voxel a triangle touches is missed) and the
  * per-voxel averages are exact integer sums that do not overflow.
  *
- * The voxels are then lit (every vtkLight kind VTK renders, with soft voxel shadows, plus
- * emission), filtered into anisotropic mipmaps, optionally bounced, and cone-traced per
- * pixel from a G-buffer: indirect diffuse light, a specular cone, ambient occlusion and cone
- * soft shadows are composited with VTK's own shading of the opaque geometry. Translucent,
+ * The voxels are then lit (every vtkLight kind VTK renders, occluded through shadow maps or
+ * voxel shadows, plus emission), filtered into anisotropic mipmaps, optionally bounced, and
+ * cone-traced per pixel from a G-buffer: indirect diffuse light, a specular cone, ambient
+ * occlusion and the lights' shadows (shadow maps, or cones) are composited with VTK's own
+ * shading of the opaque geometry. Translucent,
  * volume and overlay props are then rendered by VTK's normal steps on top.
  *
  * Actors are static unless marked dynamic (SetPropDynamic()) or, with AutoDynamic on,
