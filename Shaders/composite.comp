@@ -53,20 +53,9 @@ void main()
   bool hasNormal = dot(n, n) > 0.25;
   // The surface's plane: its normal, or where VTK computed none (unlit actors, scenes without
   // lights) the depth surface's own, from the next pixels' positions.
-  vec3 gridNormal;
-  if (hasNormal)
-  {
-    gridNormal = normalize(normalToGrid * n);
-  }
-  else
-  {
-    vec2 texel = 1.0 / vec2(imageSize(compositeColor));
-    vec2 dx = texCoord + vec2(texel.x, 0.0);
-    vec2 dy = texCoord + vec2(0.0, texel.y);
-    gridNormal = cross(gbufferGridPosition(dx, textureLod(gbufferDepth, dx, 0.0).r) - p,
-      gbufferGridPosition(dy, textureLod(gbufferDepth, dy, 0.0).r) - p);
-    gridNormal = dot(gridNormal, gridNormal) > 0.0 ? normalize(gridNormal) : vec3(0.0);
-  }
+  vec3 gridNormal = hasNormal
+    ? normalize(normalToGrid * n)
+    : gbufferDepthNormal(texCoord, 1.0 / vec2(imageSize(compositeColor)), p);
 
   vec2 f = texCoord * traceSize - 0.5;
   vec2 base = floor(f);

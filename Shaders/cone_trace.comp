@@ -176,14 +176,11 @@ bool pixelShadowMap(int l)
 // frame's edges.
 bool shadowsFromMapsOnly()
 {
-  for (int l = 0; l < voxelLightInfo.x; ++l)
-  {
-    if (voxelLights[l].attenuation.w == 0.0 && !pixelShadowMap(l))
-    {
-      return false;
-    }
-  }
-  return true;
+#ifdef VOXELGI_SHADOW_MAPS
+  return shadowInfo.x != 0;
+#else
+  return false;
+#endif
 }
 
 // The part of VTK's direct shading (diffuse albedo, specular coefficient and power) at the
@@ -257,11 +254,8 @@ void main()
   {
     // VTK computed no normal (unlit actor): take the depth surface's own, from the next
     // traced pixels' positions.
-    vec2 dx = texCoord + vec2(texel.x, 0.0);
-    vec2 dy = texCoord + vec2(0.0, texel.y);
-    n = cross(gbufferGridPosition(dx, gbufferAt(gbufferDepth, dx).r) - p,
-      gbufferGridPosition(dy, gbufferAt(gbufferDepth, dy).r) - p);
-    n = dot(n, n) > 0.0 ? normalize(n) : -viewDir;
+    n = gbufferDepthNormal(texCoord, texel, p);
+    n = dot(n, n) > 0.0 ? n : -viewDir;
   }
   else
   {

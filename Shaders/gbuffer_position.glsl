@@ -7,3 +7,15 @@ vec3 gbufferGridPosition(vec2 uv, float depth)
   vec4 p = voxelFromNDC * vec4(uv * 2.0 - 1.0, depth * 2.0 - 1.0, 1.0);
   return p.xyz / p.w;
 }
+
+// The depth surface's own unit normal at p (seen at uv) from the positions of the next pixels
+// (`texel` apart), for surfaces VTK drew without a normal; zero where they do not span a plane.
+// Its sign is arbitrary.
+vec3 gbufferDepthNormal(vec2 uv, vec2 texel, vec3 p)
+{
+  vec2 dx = uv + vec2(texel.x, 0.0);
+  vec2 dy = uv + vec2(0.0, texel.y);
+  vec3 n = cross(gbufferGridPosition(dx, textureLod(gbufferDepth, dx, 0.0).r) - p,
+    gbufferGridPosition(dy, textureLod(gbufferDepth, dy, 0.0).r) - p);
+  return dot(n, n) > 0.0 ? normalize(n) : vec3(0.0);
+}

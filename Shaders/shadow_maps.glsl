@@ -15,6 +15,9 @@ layout(std140, binding = VOXELGI_SHADOW_BLOCK_BINDING) uniform VoxelShadowBlock
   ivec4 shadowLights[VOXELGI_MAX_LIGHTS];
   // x + y * distance from the light: a map texel's width in voxels there
   vec4 shadowTexels[VOXELGI_MAX_LIGHTS];
+  // x: 1 when every light that casts shadows (every light but a headlight) has maps valid
+  // for the pixels
+  ivec4 shadowInfo;
 };
 
 bool shadowMapped(int l)

@@ -56,19 +56,9 @@ bool ConeTrace::Prepare(const Frame& frame, std::string& error)
   }
   this->Cones.Set(frame.Config, frame.Grid.Resolution);
   // The shadow-map variant is compiled only when a scene uses it.
-  const bool withMaps = frame.Shadows && frame.Shadows->HasMaps() && frame.Config.ConeShadows;
-  if (!this->Program.IsReady() || withMaps != this->ProgramWithShadowMaps)
-  {
-    std::string log;
-    if (!this->Program.Build(
-          withMaps ? "#define VOXELGI_SHADOW_MAPS\n" : "", shaders::cone_trace_comp, log))
-    {
-      error = "cone tracing shader failed to build: " + log;
-      return false;
-    }
-    this->ProgramWithShadowMaps = withMaps;
-  }
-  return true;
+  this->WithShadowMaps = frame.Shadows && frame.Shadows->HasMaps() && frame.Config.ConeShadows;
+  return this->Program.BuildOnce(shaders::cone_trace_comp, "cone tracing", error,
+    this->WithShadowMaps ? "#define VOXELGI_SHADOW_MAPS\n" : "");
 }
 
 void ConeTrace::SetUniforms(const Frame& frame)
@@ -136,7 +126,7 @@ void ConeTrace::Run(const Frame& frame)
   SamplerBindings samplers(frame.Window);
   SetConeTracingSamplers(
     p, samplers, frame.Lighting->GetRadiance(), *frame.Mipmap, 0.0f, this->Cones.StepFactor);
-  if (this->ProgramWithShadowMaps)
+  if (this->WithShadowMaps)
   {
     frame.Shadows->Bind(p, samplers);
   }

@@ -65,7 +65,7 @@ private:
   const GBufferPass& GBuffer;
   ConeSettings Cones;
   ComputeProgram Program;
-  bool ProgramWithShadowMaps = false;
+  bool WithShadowMaps = false; // the program's variant
   std::array<TraceImages, 2> History; // this frame's and the previous frame's
   int Current = 0;
   bool HistoryValid = false;

@@ -70,13 +70,15 @@ bool ComputeProgram::Build(const std::string& defines, const char* source, std::
     return false;
   }
   this->Handle = program;
+  this->Defines = defines;
   return true;
 }
 
-bool ComputeProgram::BuildOnce(const char* source, const char* what, std::string& error)
+bool ComputeProgram::BuildOnce(
+  const char* source, const char* what, std::string& error, const std::string& defines)
 {
   std::string log;
-  if (this->IsReady() || this->Build("", source, log))
+  if ((this->IsReady() && this->Defines == defines) || this->Build(defines, source, log))
   {
     return true;
   }

@@ -41,9 +41,10 @@ public:
 
   /// Compile and link `defines` + `source`; on failure returns false and fills `log`.
   bool Build(const std::string& defines, const char* source, std::string& log);
-  /// Build `source` unless the program is ready; on failure `error` says that the `what`
-  /// shader failed, with the compiler's log.
-  bool BuildOnce(const char* source, const char* what, std::string& error);
+  /// Build `defines` + `source` unless the program is ready with those defines; on failure
+  /// `error` says that the `what` shader failed, with the compiler's log.
+  bool BuildOnce(
+    const char* source, const char* what, std::string& error, const std::string& defines = "");
   bool IsReady() const { return this->Handle != 0; }
   bool IsAllocated() const { return this->Handle != 0; }
 
@@ -69,6 +70,7 @@ public:
 
 private:
   unsigned int Handle = 0;
+  std::string Defines; // of the ready program
 };
 
 /// A 3D texture with immutable storage, usable as sampler and as image.

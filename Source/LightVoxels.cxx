@@ -49,19 +49,9 @@ bool LightVoxels::Prepare(const Frame& frame, std::string& error)
   }
   this->VoxelShadows = config.LightOcclusion != vtkVoxelGIPass::LIGHT_OCCLUSION_NONE;
   // The shadow-map variant is compiled only when a scene uses it.
-  const bool withMaps = this->Shadows.HasMaps();
-  if (!this->Program.IsReady() || withMaps != this->ProgramWithShadowMaps)
-  {
-    std::string log;
-    if (!this->Program.Build(
-          withMaps ? "#define VOXELGI_SHADOW_MAPS\n" : "", shaders::light_voxels_comp, log))
-    {
-      error = "voxel lighting shader failed to build: " + log;
-      return false;
-    }
-    this->ProgramWithShadowMaps = withMaps;
-  }
-  return true;
+  this->WithShadowMaps = this->Shadows.HasMaps();
+  return this->Program.BuildOnce(shaders::light_voxels_comp, "voxel lighting", error,
+    this->WithShadowMaps ? "#define VOXELGI_SHADOW_MAPS\n" : "");
 }
 
 void LightVoxels::Run(const Frame& frame, bool keepIndirect)
@@ -80,7 +70,7 @@ void LightVoxels::Run(const Frame& frame, bool keepIndirect)
   p.SetInt("voxelEmission", emission);
   p.SetInt("hasEmission", voxels.HasEmission() ? 1 : 0);
   p.SetInt("voxelShadows", this->VoxelShadows ? 1 : 0);
-  if (this->ProgramWithShadowMaps)
+  if (this->WithShadowMaps)
   {
     this->Shadows.Bind(p, samplers);
   }

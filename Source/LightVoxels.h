@@ -58,7 +58,7 @@ private:
   Volume3D Radiance;
   Volume3D Direct; // kept only when bouncing
   ComputeProgram Program;
-  bool ProgramWithShadowMaps = false;
+  bool WithShadowMaps = false; // the program's variant
   std::vector<double> Key; // the settings the radiance was computed with; empty: stale
   bool VoxelShadows = true;
 };

@@ -132,6 +132,7 @@ bool ShadowMaps::Prepare(const Frame& frame, const LightBlock& lights, std::stri
 {
   const std::vector<vtkLight*>& used = lights.GetLights();
   int count = 0;
+  bool pixelsMapsOnly = true;
   for (std::size_t l = 0; l < MaxLights; ++l)
   {
     vtkLight* light = l < used.size() ? used[l] : nullptr;
@@ -141,8 +142,10 @@ bool ShadowMaps::Prepare(const Frame& frame, const LightBlock& lights, std::stri
     entry[1] = layers;
     entry[2] = layers > 0 && light->LightTypeIsSceneLight() ? 1 : 0;
     entry[3] = 0;
+    pixelsMapsOnly = pixelsMapsOnly && (!light || light->LightTypeIsHeadlight() || entry[2]);
     count += layers;
   }
+  this->Data.Info[0] = pixelsMapsOnly ? 1 : 0;
   if (count == 0)
   {
     this->Maps.Release();

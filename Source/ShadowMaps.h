@@ -57,6 +57,7 @@ private:
     float Matrices[16 * MaxLayers]; // column-major grid -> clip, per layer
     int Lights[4 * MaxLights];      // first layer (-1: none), layers, valid for the pixels
     float Texels[4 * MaxLights];    // a texel's width in voxels: x + y * distance
+    int Info[4];                    // every shadow-casting light has maps for the pixels
   };
 
   ViewRenderer View; // draws through each light's camera

@@ -187,13 +187,19 @@ int DirectLightOnPlane()
   return EXIT_SUCCESS;
 }
 
-int ShadowedFloor()
+// A floor of albedo 0.8 at y = 0 and a block of the same, [-1, 1] x [1.5, 2] x [-1, 1], over it.
+void AddFloorAndFloatingBlock(vtkRenderer* renderer)
 {
-  vtkNew<vtkRenderer> renderer;
   voxelgi_test::AddQuad(renderer, dvec3(-3, 0, -3), dvec3(-3, 0, 3), dvec3(3, 0, -3), 0.8, 0.8, 0.8);
   vtkNew<vtkCubeSource> cube;
   cube->SetBounds(-1.0, 1.0, 1.5, 2.0, -1.0, 1.0);
   vtkVoxelGIScenes::AddSource(renderer, cube, 0.8, 0.8, 0.8);
+}
+
+int ShadowedFloor()
+{
+  vtkNew<vtkRenderer> renderer;
+  AddFloorAndFloatingBlock(renderer);
   vtkNew<vtkLight> sun; // straight down
   sun->SetLightTypeToSceneLight();
   sun->SetPositional(false);
@@ -234,10 +240,7 @@ int ShadowedFloor()
 int PointLightShadow()
 {
   vtkNew<vtkRenderer> renderer;
-  voxelgi_test::AddQuad(renderer, dvec3(-3, 0, -3), dvec3(-3, 0, 3), dvec3(3, 0, -3), 0.8, 0.8, 0.8);
-  vtkNew<vtkCubeSource> cube;
-  cube->SetBounds(-1.0, 1.0, 1.5, 2.0, -1.0, 1.0);
-  vtkVoxelGIScenes::AddSource(renderer, cube, 0.8, 0.8, 0.8);
+  AddFloorAndFloatingBlock(renderer);
   const dvec3 lamp(0.0, 5.0, 0.0);
   vtkNew<vtkLight> light;
   light->SetLightTypeToSceneLight();
@@ -255,14 +258,10 @@ int PointLightShadow()
   camera->SetViewUp(0.0, 0.0, -1.0);
   camera->SetParallelScale(3.5);
   renderer->ResetCameraClippingRange();
-  vtkNew<vtkRenderWindow> window;
-  window->SetSize(200, 200);
-  window->AddRenderer(renderer);
-  vtkNew<vtkVoxelGIPass> gi;
-  gi->SetVoxelResolution(64);
+  voxelgi_test::GIWindow view(renderer); // 200 x 200 pixels, 64^3 voxels
+  vtkVoxelGIPass* gi = view.GI;
   gi->SetBounces(0);
-  renderer->SetPass(gi);
-  window->Render();
+  view.Window->Render();
   VOXELGI_CHECK(gi->GetGIActive(), "GI did not run");
   VOXELGI_CHECK(gi->GetStageRan(vtkVoxelGIPass::STAGE_SHADOW_MAPS), "no shadow maps");
 
