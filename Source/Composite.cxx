@@ -37,8 +37,7 @@ bool Composite::Prepare(const Frame& frame, std::string& error)
 
 void Composite::Run(const Frame& frame)
 {
-  // Timed with the trace: it is the trace's upsampling.
-  ScopedStage stage(*frame.Clock, vtkVoxelGIPass::STAGE_CONE_TRACE);
+  ScopedStage stage(*frame.Clock, vtkVoxelGIPass::STAGE_COMPOSITE);
   vtkTextureObject* indirect = this->Trace.GetIndirect();
   vtkTextureObject* shadowed = this->Trace.GetShadowed();
   ComputeProgram& p = this->Program;

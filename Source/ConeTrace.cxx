@@ -117,7 +117,7 @@ void ConeTrace::SetHistoryUniforms(const Frame& frame, bool reuse)
 void ConeTrace::Run(const Frame& frame)
 {
   ScopedStage stage(*frame.Clock, vtkVoxelGIPass::STAGE_CONE_TRACE);
-  const bool reuse = frame.Config.TemporalReuse && frame.CameraOnly && this->HistoryValid;
+  const bool reuse = frame.Config.TemporalReuse && frame.Plan.Trace == TraceWork::CameraOnly && this->HistoryValid;
   this->Current = 1 - this->Current;
   const TraceImages& now = this->History[this->Current];
   const TraceImages& before = this->History[1 - this->Current];

@@ -5,6 +5,7 @@
 #include "LightVoxels.h"
 #include "VoxelGIShaders.h"
 #include "VoxelizePass.h"
+#include "vtkVoxelGIPass.h"
 
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkRenderer.h"
@@ -27,6 +28,7 @@ bool DebugView::Prepare(const Frame& frame, std::string& error)
 
 void DebugView::Run(const Frame& frame)
 {
+  ScopedStage stage(*frame.Clock, vtkVoxelGIPass::STAGE_DEBUG_VIEW);
   ComputeProgram& p = this->Program;
   p.Use(frame.Window);
   const VoxelizePass& voxels = *frame.Voxelization;

@@ -1,13 +1,15 @@
 /**
  * What every stage of vtkVoxelGIPass sees of one frame: the renderer and its window, the
- * render state VTK passed in, the voxel grid, a snapshot of the pass's settings, and the
- * stage clock. Every stage has one shape: `Prepare(const Frame&)` (allocate what the frame
- * needs, build programs; false with a message when it cannot), `Run(const Frame&)` (do the
- * work), `ReleaseGraphicsResources(vtkWindow*)` (free every GL object, context current).
+ * render state VTK passed in, the frame's plan, the voxel grid, a snapshot of the pass's
+ * settings, and the stage clock. Every stage has one shape: `Prepare(const Frame&, error)`
+ * (allocate what the frame needs, build programs; false with a message when it cannot),
+ * `Run(const Frame&)` (do the work, timed under the stage's own id),
+ * `ReleaseGraphicsResources(vtkWindow*)` (free every GL object, context current).
  */
 #ifndef VoxelGIFrame_h
 #define VoxelGIFrame_h
 
+#include "FramePlan.h"
 #include "GLHelpers.h"
 #include "SceneScan.h"
 #include "VoxelGrid.h"
@@ -23,6 +25,7 @@ class vtkVoxelGIPass;
 
 namespace voxelgi
 {
+class LightBlock;
 class LightVoxels;
 class Ranks;
 class ShadowMaps;
@@ -120,9 +123,12 @@ struct Frame
   Ranks* Processes = nullptr;
   Settings Config;
   StageClock* Clock = nullptr;
-  /// The scan's decision for the voxels, and the actors they are built from.
-  VoxelUpdate Voxels;
+  /// What each stage does this frame.
+  FramePlan Plan;
+  /// The actors the voxels are built from.
   const std::vector<ActorRecord>* Actors = nullptr;
+  /// The renderer's lights, as the light block holds them.
+  const LightBlock* Lights = nullptr;
   /// The grid of the current voxels.
   VoxelGrid Grid;
   /// The volumes the trace and the debug view read: the pass's own, or those of the pass
@@ -133,13 +139,12 @@ struct Frame
   /// The lights' shadow maps, where the pixels' shadows may use them (the pass's own lights
   /// and voxels); else null.
   const ShadowMaps* Shadows = nullptr;
+  /// The state of the radiance traced (the pass's own, or its voxel source's).
+  const RadianceState* Radiance = nullptr;
   /// Whether the renderer has lights GI uses (else lit surfaces show only their ambient term).
   bool LitScene = true;
   /// Whether any voxelized actor is specular (else no specular cone).
   bool AnySpecular = false;
-  /// Whether only the camera changed since the last traced frame (voxels, lights and
-  /// settings as they were): the trace may reuse that frame's results.
-  bool CameraOnly = false;
   /// The renderer's viewport in the window (tiled size and origin).
   int Width = 0;
   int Height = 0;

@@ -54,7 +54,7 @@ bool LightVoxels::Prepare(const Frame& frame, std::string& error)
     this->WithShadowMaps ? "#define VOXELGI_SHADOW_MAPS\n" : "");
 }
 
-void LightVoxels::Run(const Frame& frame, bool keepIndirect)
+void LightVoxels::Run(const Frame& frame)
 {
   ScopedStage stage(*frame.Clock, vtkVoxelGIPass::STAGE_LIGHT);
   const VoxelizePass& voxels = this->Voxels;
@@ -79,7 +79,7 @@ void LightVoxels::Run(const Frame& frame, bool keepIndirect)
     return;
   }
   const bool direct = this->Direct.IsAllocated();
-  const bool keep = keepIndirect && direct;
+  const bool keep = frame.Plan.Lights == LightWork::Continue && direct;
   p.SetInt("writeDirect", direct ? 1 : 0);
   p.SetInt("keepIndirect", keep ? 1 : 0);
   const GLenum access = keep ? GL_READ_WRITE : GL_WRITE_ONLY;
@@ -93,32 +93,8 @@ void LightVoxels::Run(const Frame& frame, bool keepIndirect)
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 }
 
-namespace
-{
-// What the radiance, its mipmaps and bounces depend on beyond voxels and lights.
-std::vector<double> RadianceKey(const Frame& frame)
-{
-  const Settings& c = frame.Config;
-  return { static_cast<double>(c.LightOcclusion), static_cast<double>(c.ShadowMapResolution),
-    static_cast<double>(c.Bounces), static_cast<double>(c.AnisotropicMipmaps),
-    static_cast<double>(c.DiffuseConeCount), c.DiffuseConeAperture, c.ConeStepFactor,
-    c.MaxTraceDistance * frame.Grid.Resolution };
-}
-}
-
-bool LightVoxels::IsCurrent(const Frame& frame, bool changed) const
-{
-  return !changed && !this->Key.empty() && this->Key == RadianceKey(frame);
-}
-
-void LightVoxels::SetCurrent(const Frame& frame, bool valid)
-{
-  this->Key = valid ? RadianceKey(frame) : std::vector<double>();
-}
-
 void LightVoxels::ReleaseGraphicsResources(vtkWindow*)
 {
-  this->Key.clear();
   this->Radiance.Release();
   this->Direct.Release();
   this->Program.Release();

@@ -36,15 +36,11 @@ public:
   bool Prepare(const Frame& frame, std::string& error);
   /// The bytes Prepare allocates for a grid of `resolution` with `settings`.
   static std::size_t RequiredBytes(int resolution, const Settings& settings);
-  /// Direct light and emission into the radiance (and direct) volume.
-  /// `keepIndirect`: add the indirect light of the last bounces (radiance minus direct, both
-  /// as they were) to the new direct light, so that one bounce can continue from it.
-  void Run(const Frame& frame, bool keepIndirect = false);
-  /// Whether the radiance (after Mipmap and Bounce) was computed with the frame's voxels,
-  /// lights and settings: `changed` tells whether voxels or lights changed since.
-  bool IsCurrent(const Frame& frame, bool changed) const;
-  /// The radiance chain ran for `frame` (`valid`) or could not (then it is stale).
-  void SetCurrent(const Frame& frame, bool valid);
+  /// Direct light and emission into the radiance (and direct) volume. When the plan
+  /// continues the last solution (LightWork::Continue, with bounces), the indirect light of
+  /// the last bounces (radiance minus direct, both as they were) is added to the new direct
+  /// light, so that one bounce can continue from it.
+  void Run(const Frame& frame);
   void ReleaseGraphicsResources(vtkWindow* window);
 
   Volume3D& GetRadiance() { return this->Radiance; }
@@ -59,7 +55,6 @@ private:
   Volume3D Direct; // kept only when bouncing
   ComputeProgram Program;
   bool WithShadowMaps = false; // the program's variant
-  std::vector<double> Key; // the settings the radiance was computed with; empty: stale
   bool VoxelShadows = true;
 };
 

@@ -1,6 +1,9 @@
 #include "Present.h"
 
+#include "Composite.h"
+#include "DebugView.h"
 #include "Frame.h"
+#include "GBufferPass.h"
 #include "VoxelGIShaders.h"
 #include "vtkVoxelGIPass.h"
 
@@ -16,10 +19,42 @@
 namespace voxelgi
 {
 
-Present::Present() = default;
+Present::Present(const Composite& composite, const GBufferPass& gbuffer, const DebugView& debug)
+  : Compositor(composite)
+  , GBuffer(gbuffer)
+  , Debug(debug)
+{
+}
+
 Present::~Present() = default;
 
-void Present::Run(const Frame& frame, vtkTextureObject* image, vtkTextureObject* depth)
+bool Present::Prepare(const Frame& frame, std::string& error)
+{
+  if (!ReadyQuad(this->Quad, frame.Window, shaders::present_frag))
+  {
+    error = "could not build the present program";
+    return false;
+  }
+  return true;
+}
+
+void Present::Run(const Frame& frame)
+{
+  this->RenderedProps = 0;
+  if (frame.Plan.VoxelView)
+  {
+    ScopedStage stage(*frame.Clock, vtkVoxelGIPass::STAGE_PRESENT);
+    this->Draw(frame, this->Debug.GetImage(), nullptr);
+    return;
+  }
+  {
+    ScopedStage stage(*frame.Clock, vtkVoxelGIPass::STAGE_PRESENT);
+    this->Draw(frame, this->Compositor.GetDisplay(), this->GBuffer.GetDepth());
+  }
+  this->RenderedProps = this->RenderRemainingSteps(frame);
+}
+
+void Present::Draw(const Frame& frame, vtkTextureObject* image, vtkTextureObject* depth)
 {
   vtkShaderProgram* program = ReadyQuad(this->Quad, frame.Window, shaders::present_frag);
   if (!program || !image)

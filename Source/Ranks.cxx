@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <limits>
 
 namespace voxelgi
 {
@@ -16,6 +17,45 @@ void Ranks::Update()
   this->Controller = size > 1 ? controller : nullptr;
   this->Size = size > 1 ? size : 1;
   this->Index = size > 1 ? controller->GetLocalProcessId() : 0;
+}
+
+bool Ranks::BeginFrame(bool runs)
+{
+  this->Update();
+  if (!this->Controller)
+  {
+    return runs;
+  }
+  this->ResetTraffic();
+  return this->All(runs);
+}
+
+void Ranks::Union(double bounds[6], const std::vector<bool*>& flags)
+{
+  if (!this->Controller)
+  {
+    return;
+  }
+  std::vector<double> shared(6 + flags.size(), -std::numeric_limits<double>::max());
+  for (int a = 0; a < 3 && *flags[0]; ++a)
+  {
+    shared[2 * a] = -bounds[2 * a];
+    shared[2 * a + 1] = bounds[2 * a + 1];
+  }
+  for (std::size_t i = 0; i < flags.size(); ++i)
+  {
+    shared[6 + i] = *flags[i] ? 1.0 : 0.0;
+  }
+  this->Max(shared);
+  for (int a = 0; a < 3; ++a)
+  {
+    bounds[2 * a] = -shared[2 * a];
+    bounds[2 * a + 1] = shared[2 * a + 1];
+  }
+  for (std::size_t i = 0; i < flags.size(); ++i)
+  {
+    *flags[i] = shared[6 + i] > 0.0;
+  }
 }
 
 template <typename T>

@@ -10,6 +10,7 @@
 #define VoxelGIRanks_h
 
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 class vtkMultiProcessController;
@@ -25,6 +26,26 @@ public:
   bool Distributed() const { return this->Controller != nullptr; }
   int Rank() const { return this->Index; }
   int Count() const { return this->Size; }
+
+  /// The start of a frame's shared part: follow the controller, reset the traffic counts,
+  /// and whether every rank `runs` GI (each voxelizes its piece into one grid: all, or none).
+  bool BeginFrame(bool runs);
+  /// The shared part ran ahead of the frame's Render() (vtkVoxelGIPass::RenderRanks): its
+  /// verdict is held until Render() takes it.
+  void Hold(bool active)
+  {
+    this->Held = true;
+    this->HeldActive = active;
+  }
+  bool Take(bool& active)
+  {
+    active = this->HeldActive;
+    return std::exchange(this->Held, false);
+  }
+
+  /// One grid around every rank's piece: the union of the `bounds` of the ranks whose
+  /// `*flags[0]` (they collected a piece) holds, and the OR of every flag (one reduction).
+  void Union(double bounds[6], const std::vector<bool*>& flags);
 
   /// Logical OR / AND of `value` over the ranks.
   bool Any(bool value);
@@ -58,6 +79,8 @@ private:
   int Size = 1;
   std::size_t Bytes = 0;
   double Milliseconds = 0.0;
+  bool Held = false;
+  bool HeldActive = false;
 };
 
 }

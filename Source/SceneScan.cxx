@@ -508,38 +508,6 @@ struct Findings
   bool SettingsChanged = false;
   bool Invalidate = false;
 };
-
-/// Distributed: one grid around every rank's piece (the union of the bounds), and what any
-/// rank must rebuild, all rebuild (the OR of the rest). One reduction of 12 doubles.
-void Agree(Ranks& ranks, Findings& found)
-{
-  if (!ranks.Distributed())
-  {
-    return;
-  }
-  bool* flags[6] = { &found.Collected, &found.Full, &found.Dynamic, &found.Emission,
-    &found.SettingsChanged, &found.Invalidate };
-  std::vector<double> shared(12, -std::numeric_limits<double>::max());
-  for (int a = 0; a < 3 && found.Collected; ++a)
-  {
-    shared[2 * a] = -found.Bounds[2 * a];
-    shared[2 * a + 1] = found.Bounds[2 * a + 1];
-  }
-  for (int i = 0; i < 6; ++i)
-  {
-    shared[6 + i] = *flags[i] ? 1.0 : 0.0;
-  }
-  ranks.Max(shared);
-  for (int a = 0; a < 3; ++a)
-  {
-    found.Bounds[2 * a] = -shared[2 * a];
-    found.Bounds[2 * a + 1] = shared[2 * a + 1];
-  }
-  for (int i = 0; i < 6; ++i)
-  {
-    *flags[i] = shared[6 + i] > 0.0;
-  }
-}
 }
 
 bool SceneScan::Scan(vtkRenderer* renderer, const Settings& settings, Ranks& ranks,
@@ -571,7 +539,10 @@ bool SceneScan::Scan(vtkRenderer* renderer, const Settings& settings, Ranks& ran
     this->BuiltPadding != settings.GridPadding ||
     settings.HardwareConservativeRaster != this->BuiltHardware;
   found.Invalidate = this->InvalidateRequested;
-  Agree(ranks, found);
+  // Distributed: one grid around every rank's piece, and what any rank must rebuild, all
+  // rebuild.
+  ranks.Union(found.Bounds, { &found.Collected, &found.Full, &found.Dynamic, &found.Emission,
+                              &found.SettingsChanged, &found.Invalidate });
   this->InvalidateRequested = found.Invalidate;
   if (!found.Collected)
   {
@@ -643,9 +614,10 @@ void SceneScan::RefreshSignatures()
 }
 
 //------------------------------------------------------------------------------
-std::vector<unsigned long long> SceneScan::FrameKeyOf(vtkRenderer* renderer,
-  vtkMTimeType settingsTime, const std::vector<vtkMTimeType>* signatures)
+std::vector<unsigned long long> SceneScan::ImageKey(
+  vtkRenderer* renderer, vtkMTimeType settingsTime, bool scanned) const
 {
+  const std::vector<vtkMTimeType>* signatures = scanned ? &this->PropSignatures : nullptr;
   std::vector<unsigned long long> key{ renderer->GetMTime(), settingsTime,
     renderer->GetActiveCamera()->GetMTime() };
   int size[4];
@@ -673,15 +645,5 @@ std::vector<unsigned long long> SceneScan::FrameKeyOf(vtkRenderer* renderer,
   return key;
 }
 
-bool SceneScan::Unchanged(vtkRenderer* renderer, vtkMTimeType settingsTime) const
-{
-  return !this->FrameKey.empty() &&
-    FrameKeyOf(renderer, settingsTime, &this->PropSignatures) == this->FrameKey;
-}
-
-void SceneScan::RememberFrame(vtkRenderer* renderer, vtkMTimeType settingsTime)
-{
-  this->FrameKey = FrameKeyOf(renderer, settingsTime, nullptr);
-}
 
 }

@@ -3,7 +3,7 @@
  * their modification times with the frame the voxels were built from, applies the update
  * policy and fits the voxel grid. It decides what the Voxelize stage does ("leave out what
  * the scene does not need"): nothing, the dynamic actors alone, or everything. It also keys
- * the traced image, so that a frame in which nothing changed presents the last one again.
+ * what an image shows, so that a frame in which nothing changed presents the last one again.
  *
  * Unit tested without a GL context (Testing/Unit/TestSceneScan.cxx).
  */
@@ -104,17 +104,13 @@ public:
   /// CPU time of the last Scan(), milliseconds.
   double GetMilliseconds() const { return this->Milliseconds; }
 
-  /// Whether the image traced last frame can be presented again: nothing it depends on
-  /// (renderer, camera, viewport, props, lights, the pass's settings as `settingsTime`)
-  /// changed since RememberFrame(). Reads the props' signatures of this frame's Scan() (the
-  /// voxelization in between changes what it draws, not what the image was made from).
-  bool Unchanged(vtkRenderer* renderer, vtkMTimeType settingsTime) const;
-  /// Remember the state the frame's image shows, once it is drawn: what VTK modifies while
-  /// drawing (a mapper creating its default lookup table, a pass giving a prop its keys) is
-  /// not a change of the scene.
-  void RememberFrame(vtkRenderer* renderer, vtkMTimeType settingsTime);
-  /// Forget the remembered state (the next Unchanged() is false).
-  void ForgetFrame() { this->FrameKey.clear(); }
+  /// What the renderer's image shows: renderer, camera, viewport, props, lights and the
+  /// pass's settings (as `settingsTime`); equal keys, equal images. `scanned`: the props'
+  /// signatures as the last Scan() read them (the voxelization in between changes what VTK
+  /// draws, not what the image is made from); else read now (after VTK drew the frame, what
+  /// it modified while drawing, such as a mapper's default lookup table, is not a change).
+  std::vector<unsigned long long> ImageKey(
+    vtkRenderer* renderer, vtkMTimeType settingsTime, bool scanned) const;
 
   /// Latest modification time of an actor and of what it is drawn from: its mapper, every
   /// input of the mapper, the planes it clips with, its textures' images and its shader
@@ -125,10 +121,6 @@ public:
   static vtkMTimeType PropSignature(vtkProp* prop, vtkMTimeType* inputTime = nullptr);
 
 private:
-  /// The key of the traced image: with `signatures` (one per view prop, in order), those
-  /// instead of reading the props again.
-  static std::vector<unsigned long long> FrameKeyOf(vtkRenderer* renderer,
-    vtkMTimeType settingsTime, const std::vector<vtkMTimeType>* signatures);
   /// Collect the visible opaque surface actors; false when there is none.
   bool Collect(vtkRenderer* renderer, std::vector<ActorRecord>& records, double bounds[6],
     std::vector<std::string>& warnings);
@@ -153,7 +145,6 @@ private:
   bool AnyLines = false;
   std::set<std::string> WarnedLeftOut; // kinds of props left out that were reported
   double Milliseconds = 0.0;
-  std::vector<unsigned long long> FrameKey;
   std::vector<vtkMTimeType> PropSignatures; // of every view prop, by the last Scan()
 };
 

@@ -128,9 +128,9 @@ bool OutsideView(const double* bounds, vtkMatrix4x4* clipFromWorld)
 }
 }
 
-bool ShadowMaps::Prepare(const Frame& frame, const LightBlock& lights, std::string& error)
+bool ShadowMaps::Prepare(const Frame& frame, std::string& error)
 {
-  const std::vector<vtkLight*>& used = lights.GetLights();
+  const std::vector<vtkLight*>& used = frame.Lights->GetLights();
   int count = 0;
   bool pixelsMapsOnly = true;
   for (std::size_t l = 0; l < MaxLights; ++l)
@@ -166,8 +166,9 @@ void ShadowMaps::Bind(ComputeProgram& program, SamplerBindings& samplers) const
   this->Buffer.BindUniform(VOXELGI_SHADOW_BLOCK_BINDING);
 }
 
-void ShadowMaps::Run(const Frame& frame, const LightBlock& lights)
+void ShadowMaps::Run(const Frame& frame)
 {
+  const LightBlock& lights = *frame.Lights;
   if (!this->HasMaps())
   {
     return;

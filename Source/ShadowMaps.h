@@ -32,9 +32,9 @@ public:
 
   /// Choose the lights that get maps (block order) and allocate the maps at the frame's
   /// ShadowMapResolution. Returns false with a message when they cannot be allocated.
-  bool Prepare(const Frame& frame, const LightBlock& lights, std::string& error);
+  bool Prepare(const Frame& frame, std::string& error);
   /// Render the maps with the frame's voxelized actors as casters; upload the block.
-  void Run(const Frame& frame, const LightBlock& lights);
+  void Run(const Frame& frame);
   /// Whether any light has a map.
   bool HasMaps() const { return this->Maps.Layers() > 0; }
   /// Bind the block at VOXELGI_SHADOW_BLOCK_BINDING and the maps to `program`'s (in use)

@@ -1,11 +1,14 @@
 #include "VolumeReadback.h"
 
-#include "VoxelGrid.h"
+#include "Composite.h"
+#include "LightVoxels.h"
+#include "VoxelView.h"
 #include "VoxelizePass.h"
 #include "vtkVoxelGIPass.h"
 
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
+#include "vtkOpenGLRenderWindow.h"
 #include "vtkPointData.h"
 #include "vtkTypeUInt32Array.h"
 #include "vtkUnsignedCharArray.h"
@@ -37,10 +40,19 @@ vtkSmartPointer<vtkDataArray> ReadTexels(const Volume3D& volume, bool floats, vt
 }
 }
 
-bool ReadVolume(const VoxelizePass& voxels, const Volume3D& radiance, const VoxelGrid& grid,
-  int volume, vtkImageData* image)
+bool ReadVolume(const VoxelView& view, int volume, vtkImageData* image)
 {
+  const VoxelizePass& voxels = *view.Voxelization;
+  const Volume3D& radiance = view.Lighting->GetRadiance();
+  const VoxelGrid& grid = view.Grid;
   const int res = voxels.GetResolution();
+  if (!image || !view.Window || res <= 0 ||
+    (volume == vtkVoxelGIPass::VOLUME_EMISSION && !voxels.HasEmission()) ||
+    (volume == vtkVoxelGIPass::VOLUME_RADIANCE && !radiance.IsAllocated()))
+  {
+    return false;
+  }
+  view.Window->MakeCurrent();
   const vtkIdType n = static_cast<vtkIdType>(res) * res * res;
   vtkSmartPointer<vtkDataArray> array;
   switch (volume)
@@ -87,6 +99,20 @@ bool ReadVolume(const VoxelizePass& voxels, const Volume3D& radiance, const Voxe
   image->SetOrigin(grid.Origin.x + h, grid.Origin.y + h, grid.Origin.z + h);
   array->SetName("Voxels");
   image->GetPointData()->SetScalars(array);
+  return true;
+}
+
+bool ReadImage(Composite& composite, vtkOpenGLRenderWindow* window, int image, vtkFloatArray* pixels)
+{
+  std::vector<float> rgba;
+  int w = 0, h = 0;
+  if (!pixels || !window || !composite.Read(window, image, rgba, w, h))
+  {
+    return false;
+  }
+  pixels->SetNumberOfComponents(4);
+  pixels->SetNumberOfTuples(static_cast<vtkIdType>(w) * h);
+  std::copy(rgba.begin(), rgba.end(), pixels->GetPointer(0));
   return true;
 }
 

@@ -1,22 +1,27 @@
 /**
- * Read-back of the voxel volumes (vtkVoxelGIPass::GetVoxelVolume) into vtkImageData: point
- * data "Voxels", origin at the first voxel's centre, spacing the voxel size.
+ * Read-back: the voxel volumes (vtkVoxelGIPass::GetVoxelVolume) into vtkImageData (point
+ * data "Voxels", origin at the first voxel's centre, spacing the voxel size), and the float
+ * images of the last traced frame (vtkVoxelGIPass::GetFloatImage).
  */
 #ifndef VoxelGIVolumeReadback_h
 #define VoxelGIVolumeReadback_h
 
+class vtkFloatArray;
 class vtkImageData;
+class vtkOpenGLRenderWindow;
 
 namespace voxelgi
 {
-class Volume3D;
-class VoxelizePass;
-struct VoxelGrid;
+class Composite;
+struct VoxelView;
 
-/// Copy volume `volume` (vtkVoxelGIPass::Volumes) into `image`; the context must be current.
-/// False for an unknown volume.
-bool ReadVolume(const VoxelizePass& voxels, const Volume3D& radiance, const VoxelGrid& grid,
-  int volume, vtkImageData* image);
+/// Copy volume `volume` (vtkVoxelGIPass::Volumes) of `voxels` into `image`, making their
+/// window's context current. False when there is no such volume (yet).
+bool ReadVolume(const VoxelView& voxels, int volume, vtkImageData* image);
+
+/// Copy float image `image` (vtkVoxelGIPass::Images) of `composite`, made in `window`, into
+/// `pixels` (RGBA).
+bool ReadImage(Composite& composite, vtkOpenGLRenderWindow* window, int image, vtkFloatArray* pixels);
 
 }
 

@@ -19,11 +19,11 @@ bool VoxelBounce::Prepare(const Frame& frame, std::string& error)
   return this->Program.BuildOnce(shaders::voxel_bounce_comp, "voxel bounce", error);
 }
 
-void VoxelBounce::Run(const Frame& frame, int bounces)
+void VoxelBounce::Run(const Frame& frame)
 {
   // Bounce and mipmap timings would nest: time them together.
   ScopedStage stage(*frame.Clock, vtkVoxelGIPass::STAGE_BOUNCE);
-  for (int bounce = 0; bounce < bounces; ++bounce)
+  for (int bounce = 0; bounce < frame.Plan.Bounces; ++bounce)
   {
     this->Bounce(frame);
     this->Mipmap.Build(frame.Window);

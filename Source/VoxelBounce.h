@@ -32,8 +32,8 @@ public:
   }
 
   bool Prepare(const Frame& frame, std::string& error);
-  /// `bounces` bounces, each followed by a rebuild of the mipmaps.
-  void Run(const Frame& frame, int bounces);
+  /// The plan's bounces, each followed by a rebuild of the mipmaps.
+  void Run(const Frame& frame);
   void ReleaseGraphicsResources(vtkWindow* window);
 
 private:

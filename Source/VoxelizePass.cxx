@@ -71,8 +71,8 @@ std::string VoxelizePass::Defines() const
 //------------------------------------------------------------------------------
 bool VoxelizePass::Prepare(const Frame& frame, std::string& error)
 {
-  const int resolution = frame.Voxels.Grid.Resolution;
-  const bool emission = frame.Voxels.Emission;
+  const int resolution = frame.Plan.Voxels.Grid.Resolution;
+  const bool emission = frame.Plan.Voxels.Emission;
   this->HardwareConservative = frame.Config.HardwareConservativeRaster;
   if (resolution == this->Resolution && emission == this->Emission && this->ClearProgram.IsReady())
   {
@@ -159,7 +159,7 @@ void VoxelizePass::ListEveryBrick()
 //------------------------------------------------------------------------------
 void VoxelizePass::Run(const Frame& frame)
 {
-  const bool full = frame.Voxels.Full;
+  const bool full = frame.Plan.Voxels.Full;
   this->Clear(frame);
 
   std::vector<vtkProp*> staticProps;
@@ -243,7 +243,7 @@ void VoxelizePass::MergeSums(const Frame& frame)
   }
   const std::size_t voxels = Cube(this->Resolution);
   std::vector<unsigned char> flags;
-  if (!frame.Voxels.Full && ranks.Rank() != 0)
+  if (!frame.Plan.Voxels.Full && ranks.Rank() != 0)
   {
     flags.resize(voxels);
     this->FlagVolume.Read(GL_RED_INTEGER, GL_UNSIGNED_BYTE, flags.data());
@@ -323,7 +323,7 @@ void VoxelizePass::Clear(const Frame& frame)
   this->BindAccumulators();
   this->BrickList.Bind(VOXELGI_BRICK_LIST_BINDING);
   this->ClearProgram.Use(frame.Window);
-  this->ClearProgram.SetInt("clearStatic", frame.Voxels.Full ? 1 : 0);
+  this->ClearProgram.SetInt("clearStatic", frame.Plan.Voxels.Full ? 1 : 0);
   this->ClearProgram.DispatchIndirect(this->BrickList);
   Barrier();
 }

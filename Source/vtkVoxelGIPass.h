@@ -75,6 +75,12 @@ class vtkRenderPass;
 class vtkRenderStepsPass;
 class vtkOpenGLRenderWindow;
 class vtkRenderWindow;
+namespace voxelgi
+{
+struct Configuration;
+struct FramePlan;
+struct VoxelView;
+}
 
 class VTKRENDERINGVOXELGI_EXPORT vtkVoxelGIPass : public vtkOpenGLRenderPass
 {
@@ -514,6 +520,7 @@ public:
     STAGE_BOUNCE,
     STAGE_GBUFFER,
     STAGE_CONE_TRACE,
+    STAGE_COMPOSITE,
     STAGE_PRESENT,
     STAGE_DEBUG_VIEW,
     NUMBER_OF_STAGES
@@ -632,62 +639,42 @@ protected:
   /// Release everything on the window the pass rendered to last, and follow `window`.
   void WatchWindow(vtkOpenGLRenderWindow* window);
   void WindowDeleted();
+
+  ///@{
+  /// The frame plan (FramePlan.h, built by FramePlanner): whether GI runs and what each
+  /// stage does. PlanVoxels is the ranks' part (the gate, the ranks' agreement, the scan);
+  /// FollowSource checks and follows the VoxelSource.
+  voxelgi::FramePlan& PlanFrame(const vtkRenderState* s);
+  voxelgi::FramePlan& PlanVoxels(vtkRenderer* renderer, const vtkRenderState* s);
+  bool FollowSource();
+  ///@}
+
+  ///@{
+  /// The stages, as the plan says; false where a stage cannot run (refused: GI is off).
+  /// Voxelize: the voxels. Relight: ShadowMaps, LightVoxels, Mipmap, Bounce. Trace:
+  /// GBuffer, ConeTrace, Composite (or a voxel debug view). Present: the GI image and VTK's
+  /// remaining steps, or VTK's image alone.
+  bool Voxelize();
+  bool Relight();
+  bool Trace();
+  void Present();
+  ///@}
+
   /// Render VTK's own image.
   void RenderDelegate(const vtkRenderState* s);
-  /// Whether the frame's viewport fits GL's image size limits (else says so, once per size).
-  bool ViewportFits();
-  /// Take `renderer` as the one whose voxels and images the pass keeps; false (said once)
-  /// when another renderer of the same window still has the pass.
-  bool ServeRenderer(vtkRenderer* renderer);
-  /// False, with one error, where the render passes around or below this one cannot hold GI.
-  bool PassesCombine(vtkRenderer* renderer);
-  /// Whether the frame's voxel volumes fit the memory the GL reports free (counting what the
-  /// pass holds now); refuses the configuration if not.
-  bool MemoryFits(bool emission);
+  /// The frame's configuration, as refusals are remembered.
+  voxelgi::Configuration Configuration();
   /// A stage could not be prepared: say why once, free every GL resource of the stages and
   /// render VTK's image until a setting, the scene's emission or the viewport changes.
   void Refuse(const std::string& error);
-  /// Whether the frame's configuration was refused before.
-  bool Refused() const;
-  /// OpenGL 4.3 available? Reports a missing capability once.
-  bool CheckContext(vtkRenderWindow* renWin);
-  /// Whether GI can run in `renderer` this frame (this process's view); begins the frame.
-  bool BeginFrame(vtkRenderer* renderer, const vtkRenderState* s);
-  /// The ranks' part of the frame (RanksAgree, UpdateVoxels): whether GI runs.
-  bool UpdateShared(bool runs, bool& voxelsChanged);
-  /// Scan the scene and bring the voxels up to date (Voxelize stage); false if GI cannot
-  /// run. `changed` tells whether any voxel was rewritten.
-  bool UpdateVoxels(bool& changed);
-  /// Gather the lights; when voxels, lights or settings changed: LightVoxels, Mipmap,
-  /// Bounce. False when GI cannot run (nothing lights the scene).
-  bool UpdateRadiance(bool voxelsChanged, bool& changed);
-  /// Say once when the window anti-aliases lines the one-sample G-buffer draws aliased.
-  void NoticeAliasing();
-  /// Distributed rendering (MPI ranks): whether every rank `runs` GI this frame (a collective
-  /// call; one error where another rank cannot). One process: `runs`.
-  bool RanksAgree(bool runs);
-  /// Gather the renderer's lights into the light block; false (said once) when neither they
-  /// nor `emission` light anything. `changed`: the lights differ from the last frame's.
-  bool GatherLights(bool emission, bool& changed);
-  /// Trace the VoxelSource's voxels: false (said once where it is this pass's fault) when they
-  /// cannot be used. `changed`: they or this renderer's lights changed in a way that a trace
-  /// cannot reuse.
-  bool FollowSource(bool& changed);
-  /// The pass whose voxels this one traces: the VoxelSource, or this pass.
-  const vtkVoxelGIPass* VoxelOwner() const;
-  /// Light the voxels and bounce; `follow`: only camera lights turned since the last time.
-  bool LightAndBounce(bool follow);
-  /// GBuffer, ConeTrace and Composite (unless `reuse`: nothing changed since the last traced
-  /// frame), then Present and VTK's remaining steps.
-  void RenderGI(bool reuse);
-  /// GBuffer, ConeTrace, Composite; false (refused) if their images cannot be made.
-  bool TraceFrame();
+  /// A read-only view of this pass's voxels; TracedVoxels: of those it traces (its
+  /// VoxelSource's, or its own).
+  voxelgi::VoxelView ViewVoxels() const;
+  voxelgi::VoxelView TracedVoxels() const;
   /// Free the GL resources of every stage (not the delegate's).
   void ReleaseStages(vtkWindow* w);
   /// Free the voxel volumes and the stages that fill them.
   void ReleaseVoxelStages(vtkWindow* w);
-  /// A voxel debug view over VTK's image.
-  void RenderVoxelView();
 
   vtkRenderPass* DelegatePass = nullptr;
   vtkVoxelGIPass* VoxelSource = nullptr;

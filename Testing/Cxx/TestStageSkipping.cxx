@@ -51,7 +51,7 @@ namespace
 {
 using voxelgi_test::StagesRan;
 
-const std::string Trace = "GBuffer,ConeTrace,Present";
+const std::string Trace = "GBuffer,ConeTrace,Composite,Present";
 const std::string Light = "LightVoxels,Mipmap,Bounce," + Trace;
 // The directional scene light has a shadow map (LightOcclusion ShadowMaps): every relight
 // redraws it.

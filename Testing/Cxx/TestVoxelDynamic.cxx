@@ -50,7 +50,7 @@ double At(vtkVoxelGIPass* gi, vtkImageData* image, double x, double y, double z)
 
 namespace
 {
-const std::string Relight = ",LightVoxels,Mipmap,Bounce,GBuffer,ConeTrace,Present";
+const std::string Relight = ",LightVoxels,Mipmap,Bounce,GBuffer,ConeTrace,Composite,Present";
 const std::string Unchanged = "Scan,Present";
 }
 

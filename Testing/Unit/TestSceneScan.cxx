@@ -1,6 +1,7 @@
 // The Scan stage without a GL context: what it decides to rebuild for each kind of change,
 // the update policies, the props it leaves out, and the key of an unchanged frame.
 #include "Frame.h"
+#include "FramePlan.h"
 #include "Ranks.h"
 #include "SceneScan.h"
 #include "vtkVoxelGIPass.h"
@@ -299,22 +300,57 @@ TEST_F(ScanFixture, SpecularMaterialsAreNoticed)
   EXPECT_TRUE(this->Scan.GetAnySpecular());
 }
 
-TEST_F(ScanFixture, UnchangedFrameKey)
+TEST_F(ScanFixture, ImageKeyPlansTheTrace)
 {
   vtkActor* sphere = AddSphere(this->Renderer, 0.0);
   this->Renderer->GetActiveCamera(); // created on first use, as VTK does before the pass runs
-  EXPECT_FALSE(this->Scan.Unchanged(this->Renderer, 1)); // nothing remembered yet
-  this->Scan.RememberFrame(this->Renderer, 1);
-  EXPECT_TRUE(this->Scan.Unchanged(this->Renderer, 1));
-  EXPECT_FALSE(this->Scan.Unchanged(this->Renderer, 2)); // the pass's settings changed
-  this->Scan.RememberFrame(this->Renderer, 2);
+  voxelgi::FrameHistory history;
+  const voxelgi::RadianceState radiance;
+  const auto plan = [&](vtkMTimeType settingsTime) {
+    return history.PlanTrace(
+      radiance, false, settingsTime, this->Scan.ImageKey(this->Renderer, settingsTime, false));
+  };
+  const auto traced = [&](vtkMTimeType settingsTime) {
+    history.Traced(radiance, settingsTime, this->Scan.ImageKey(this->Renderer, settingsTime, false));
+  };
+  EXPECT_EQ(plan(1), voxelgi::TraceWork::Full); // nothing traced yet
+  traced(1);
+  EXPECT_EQ(plan(1), voxelgi::TraceWork::Present);
+  EXPECT_EQ(plan(2), voxelgi::TraceWork::Full); // the pass's settings changed
+  traced(2);
   this->Renderer->GetActiveCamera()->Azimuth(10.0);
-  EXPECT_FALSE(this->Scan.Unchanged(this->Renderer, 2));
-  this->Scan.RememberFrame(this->Renderer, 2);
-  EXPECT_TRUE(this->Scan.Unchanged(this->Renderer, 2));
+  EXPECT_EQ(plan(2), voxelgi::TraceWork::CameraOnly);
+  traced(2);
+  EXPECT_EQ(plan(2), voxelgi::TraceWork::Present);
   sphere->AddPosition(1.0, 0.0, 0.0);
-  EXPECT_FALSE(this->Scan.Unchanged(this->Renderer, 2)); // a prop moved
-  this->Scan.RememberFrame(this->Renderer, 2);
-  this->Scan.ForgetFrame();
-  EXPECT_FALSE(this->Scan.Unchanged(this->Renderer, 2));
+  EXPECT_EQ(plan(2), voxelgi::TraceWork::CameraOnly); // a prop moved: the key differs
+  traced(2);
+  EXPECT_EQ(history.PlanTrace(radiance, true, 2, this->Scan.ImageKey(this->Renderer, 2, false)),
+    voxelgi::TraceWork::Full); // this renderer's lights changed other than by turning
+  history.NotTraced();
+  EXPECT_EQ(plan(2), voxelgi::TraceWork::Full);
+}
+
+TEST(FrameHistory, PlansTheLights)
+{
+  voxelgi::Settings settings;
+  settings.CameraLightTurn = 45.0;
+  voxelgi::FrameHistory history;
+  const double inf = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(history.PlanLights(false, false, 0.0, settings, 64), voxelgi::LightWork::Relight);
+  history.Lit(voxelgi::LightWork::Relight, true, settings, 64);
+  const unsigned long long lit = history.GetRadiance().Generation;
+  EXPECT_EQ(history.PlanLights(false, false, 0.0, settings, 64), voxelgi::LightWork::Current);
+  EXPECT_EQ(history.PlanLights(false, true, 30.0, settings, 64), voxelgi::LightWork::Current);
+  EXPECT_EQ(history.PlanLights(false, true, 60.0, settings, 64), voxelgi::LightWork::Continue);
+  EXPECT_EQ(history.PlanLights(false, true, inf, settings, 64), voxelgi::LightWork::Relight);
+  EXPECT_EQ(history.PlanLights(false, false, 0.0, settings, 128), voxelgi::LightWork::Relight);
+  history.Lit(voxelgi::LightWork::Continue, true, settings, 64);
+  EXPECT_EQ(history.GetRadiance().Generation, lit); // a camera-light turn keeps the trace's
+  EXPECT_EQ(history.PlanLights(true, false, 0.0, settings, 64), voxelgi::LightWork::Relight);
+  history.VoxelsWritten();
+  EXPECT_EQ(history.PlanLights(false, true, 60.0, settings, 64), voxelgi::LightWork::Relight);
+  history.Lit(voxelgi::LightWork::Relight, false, settings, 64);
+  EXPECT_EQ(history.GetRadiance().Generation, lit + 1);
+  EXPECT_EQ(history.PlanLights(false, false, 0.0, settings, 64), voxelgi::LightWork::Relight);
 }

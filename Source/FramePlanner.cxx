@@ -1,0 +1,185 @@
+#include "FramePlanner.h"
+
+#include "Frame.h"
+#include "Gate.h"
+#include "Ranks.h"
+#include "VoxelView.h"
+#include "VoxelizePass.h"
+#include "vtkVoxelGIPass.h"
+
+#include "vtkOpenGLRenderWindow.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace voxelgi
+{
+
+bool FramePlanner::PlanVoxels(Frame& frame, bool admitted, int gbufferSamples)
+{
+  // Every rank voxelizes its piece into one grid: either all run GI, or none.
+  const bool all = this->Processes.BeginFrame(admitted);
+  if (admitted && !all)
+  {
+    this->Notices.Error(Gate::OtherRank,
+      "Voxel GI is off on every rank: another of the " +
+        std::to_string(this->Processes.Count()) +
+        " ranks cannot run it (that rank says why). Rendering without GI.");
+  }
+  else
+  {
+    this->Notices.Clear(Gate::OtherRank);
+  }
+  if (!all)
+  {
+    return false;
+  }
+  ScanMessages messages;
+  const bool ok =
+    this->Scan.Scan(frame.Renderer, frame.Config, this->Processes, frame.Plan.Voxels, messages);
+  frame.Clock->SetCpuTime(vtkVoxelGIPass::STAGE_SCAN, this->Scan.GetMilliseconds());
+  for (const std::string& warning : messages.Warnings)
+  {
+    this->Notices.Report(warning, false);
+  }
+  if (!messages.Error.empty())
+  {
+    this->Notices.Report(messages.Error, true);
+  }
+  frame.Actors = &this->Scan.GetRecords();
+  frame.Grid = frame.Plan.Voxels.Run ? frame.Plan.Voxels.Grid : this->Scan.GetGrid();
+  frame.AnySpecular = this->Scan.GetAnySpecular();
+  const int windowSamples = frame.Window->GetMultiSamples();
+  if (windowSamples > 1 && gbufferSamples <= 1 && this->Scan.GetAnyLines())
+  {
+    this->Notices.Warning(Gate::Aliasing,
+      "The window is multisampled (" + std::to_string(windowSamples) +
+        " samples) but the GI G-buffer has one sample (GBufferSamples " +
+        std::to_string(gbufferSamples) +
+        "): lines, edges and 3D text that VTK anti-aliases are drawn aliased. SetGBufferSamples(" +
+        std::to_string(windowSamples) +
+        ") keeps them anti-aliased, at the cost of drawing the G-buffer with as many samples.");
+  }
+  return ok;
+}
+
+bool FramePlanner::PlanLights(Frame& frame, bool emission, vtkMTimeType settingsTime)
+{
+  FramePlan& plan = frame.Plan;
+  bool changed = false;
+  if (!this->GatherLights(frame, emission, changed))
+  {
+    this->History.Lit(LightWork::Relight, false, frame.Config, frame.Grid.Resolution);
+    return false;
+  }
+  const double turn = changed ? this->Lights.CameraTurnSinceLit() : 0.0;
+  plan.Lights = this->History.PlanLights(
+    plan.Voxels.Run && !plan.RanAhead, changed, turn, frame.Config, frame.Grid.Resolution);
+  // After a camera light's turn the new direct light plus the last bounces' indirect light
+  // is close to the converged radiance: one bounce from it stands for the whole chain.
+  plan.Bounces = plan.Lights == LightWork::Continue ? std::min(1, frame.Config.Bounces)
+                                                    : frame.Config.Bounces;
+  frame.Radiance = &this->History.GetRadiance();
+  this->PlanTrace(frame, false, settingsTime);
+  return true;
+}
+
+bool FramePlanner::PlanSource(Frame& frame, const VoxelView& source, vtkMTimeType settingsTime)
+{
+  // The source says why when it has no GI; before its first frame there is nothing to trace.
+  bool changed = false;
+  if (!source.Active || !source.Window ||
+    !this->GatherLights(frame, source.Voxelization->HasEmission(), changed))
+  {
+    return false;
+  }
+  frame.Grid = source.Grid;
+  frame.AnySpecular = source.AnySpecular;
+  frame.Voxelization = source.Voxelization;
+  frame.Lighting = source.Lighting;
+  frame.Mipmap = source.Mipmap;
+  // The source's shadow maps are of its lights: they serve this renderer's pixels when it
+  // has the same lights (viewports on one scene), else its shadows are traced.
+  frame.Shadows =
+    this->Lights.GetLights() == source.Lights->GetLights() ? source.Shadows : nullptr;
+  frame.Radiance = source.Radiance;
+  // This renderer's lights shade VTK's image and aim the shadow cones; the voxels are lit by
+  // the source's. Camera lights turning with this camera make a camera move.
+  const bool reset = changed && !std::isfinite(this->Lights.CameraTurnSinceLit());
+  this->Lights.MarkLit();
+  this->PlanTrace(frame, reset, settingsTime);
+  return true;
+}
+
+void FramePlanner::PlanTrace(Frame& frame, bool lightsReset, vtkMTimeType settingsTime)
+{
+  FramePlan& plan = frame.Plan;
+  // A relight changes the radiance: the whole image is traced again.
+  plan.Trace = plan.Lights == LightWork::Relight
+    ? TraceWork::Full
+    : this->History.PlanTrace(*frame.Radiance, lightsReset, settingsTime,
+        this->Scan.ImageKey(frame.Renderer, settingsTime, true));
+}
+
+bool FramePlanner::GatherLights(Frame& frame, bool emission, bool& changed)
+{
+  std::vector<std::string> warnings;
+  changed = this->Lights.Gather(frame.Renderer, frame.Grid, warnings);
+  for (const std::string& warning : warnings)
+  {
+    this->Notices.Report(warning, false);
+  }
+  frame.Lights = &this->Lights;
+  frame.LitScene = this->Lights.GetCount() > 0;
+  if (!frame.LitScene && !emission)
+  {
+    this->Notices.Warning(Gate::Unlit,
+      "The scene has no light and no emissive prop: nothing to illuminate, rendering without "
+      "GI.");
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void FramePlanner::Voxelized(const Frame& frame)
+{
+  this->Scan.Accept(frame.Plan.Voxels, frame.Config);
+  this->History.VoxelsWritten();
+}
+
+void FramePlanner::Lit(const Frame& frame, bool valid)
+{
+  if (valid)
+  {
+    this->Lights.MarkLit();
+  }
+  this->History.Lit(frame.Plan.Lights, valid, frame.Config, frame.Grid.Resolution);
+}
+
+void FramePlanner::Presented(const Frame& frame, bool traced, vtkMTimeType settingsTime)
+{
+  if (traced)
+  {
+    // What the image shows, read after VTK drew it (what VTK modified while drawing is no
+    // change of the scene).
+    this->History.Traced(
+      *frame.Radiance, settingsTime, this->Scan.ImageKey(frame.Renderer, settingsTime, false));
+  }
+  else
+  {
+    this->History.NotTraced();
+  }
+  if (frame.Plan.Voxels.Run)
+  {
+    this->Scan.RefreshSignatures();
+  }
+}
+
+void FramePlanner::Forget()
+{
+  this->Scan.Reset();
+  this->History.Forget();
+}
+
+}

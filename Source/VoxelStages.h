@@ -1,0 +1,46 @@
+/**
+ * The stages that make the voxels and their light, wired to what they read: Voxelize, the
+ * grid block, ShadowMaps, LightVoxels, VoxelMipmap and VoxelBounce, with their memory and
+ * release. Relight runs the light's part as the frame plan says.
+ */
+#ifndef VoxelGIVoxelStages_h
+#define VoxelGIVoxelStages_h
+
+#include "LightVoxels.h"
+#include "ShadowMaps.h"
+#include "VoxelBounce.h"
+#include "VoxelGridBlock.h"
+#include "VoxelMipmap.h"
+#include "VoxelizePass.h"
+
+#include "vtkNew.h" // for vtkNew
+
+#include <string>
+
+class vtkWindow;
+
+namespace voxelgi
+{
+struct Frame;
+
+struct VoxelStages
+{
+  vtkNew<VoxelizePass> Voxelize;
+  VoxelGridBlock GridBlock;
+  ShadowMaps Shadows;
+  LightVoxels Lighting{ *Voxelize, Shadows };
+  VoxelMipmap Mipmap{ Lighting };
+  VoxelBounce Bounce{ *Voxelize, Lighting, Mipmap };
+
+  /// ShadowMaps (scene lights, one process), LightVoxels, Mipmap and Bounce; false with
+  /// `error` when one cannot be prepared.
+  bool Relight(const Frame& frame, std::string& error);
+  /// GPU memory of one kind of resource (vtkVoxelGIPass::Resources), and of all.
+  unsigned long long AllocatedBytes(int resource) const;
+  unsigned long long MemoryBytes() const;
+  void ReleaseGraphicsResources(vtkWindow* window);
+};
+
+}
+
+#endif
