@@ -7,34 +7,8 @@ namespace voxelgi
 
 Settings Snapshot(vtkVoxelGIPass* pass, bool hasConservativeRaster)
 {
-  Settings c;
-  c.VoxelResolution = pass->GetVoxelResolution();
-  c.GridPadding = pass->GetGridPadding();
-  c.AutoDynamic = pass->GetAutoDynamic() != 0;
-  c.HardwareConservativeRaster = pass->GetHardwareConservativeRaster() && hasConservativeRaster;
-  c.UpdatePolicy = pass->GetUpdatePolicy();
-  c.UpdateInterval = pass->GetUpdateInterval();
-  c.LightOcclusion = pass->GetLightOcclusion();
-  c.ShadowMapResolution = pass->GetShadowMapResolution();
-  c.Bounces = pass->GetBounces();
-  c.CameraLightTurn = pass->GetCameraLightTurn();
-  c.GBufferSamples = pass->GetGBufferSamples();
-  c.AnisotropicMipmaps = pass->GetAnisotropicMipmaps() != 0;
-  c.DiffuseConeCount = pass->GetDiffuseConeCount();
-  c.DiffuseConeAperture = pass->GetDiffuseConeAperture();
-  c.ConeStepFactor = pass->GetConeStepFactor();
-  c.MaxTraceDistance = pass->GetMaxTraceDistance();
-  c.ConeStartOffset = pass->GetConeStartOffset();
-  c.TraceResolution = pass->GetTraceResolution();
-  c.TemporalReuse = pass->GetTemporalReuse() != 0;
-  c.IndirectIntensity = pass->GetIndirectIntensity();
-  c.SpecularCone = pass->GetSpecularCone() != 0;
-  c.SpecularIntensity = pass->GetSpecularIntensity();
-  c.AmbientOcclusionStrength = pass->GetAmbientOcclusionStrength();
-  c.AmbientOcclusionFalloff = pass->GetAmbientOcclusionFalloff();
-  c.ConeShadows = pass->GetConeShadows() != 0;
-  c.ShadowConeAperture = pass->GetShadowConeAperture();
-  c.DebugView = pass->GetDebugView();
+  Settings c = SnapshotSettings(pass);
+  c.HardwareConservativeRaster = c.HardwareConservativeRaster && hasConservativeRaster;
   return c;
 }
 

@@ -12,6 +12,7 @@
 #include "FramePlan.h"
 #include "GLHelpers.h"
 #include "SceneScan.h"
+#include "SettingsSnapshot.h" // voxelgi::Settings, generated from VoxelGISettings.json
 #include "VoxelGrid.h"
 
 #include <array>
@@ -31,38 +32,6 @@ class Ranks;
 class ShadowMaps;
 class VoxelMipmap;
 class VoxelizePass;
-
-/// The pass's settings as the stages read them (see vtkVoxelGIPass.h for their meaning).
-struct Settings
-{
-  int VoxelResolution = 0;
-  double GridPadding = 0.0;
-  bool AutoDynamic = true;
-  bool HardwareConservativeRaster = true;
-  int UpdatePolicy = 0;
-  int UpdateInterval = 1;
-  int LightOcclusion = 0;
-  int ShadowMapResolution = 0;
-  int Bounces = 0;
-  double CameraLightTurn = 0.0;
-  int GBufferSamples = 0;
-  bool AnisotropicMipmaps = true;
-  int DiffuseConeCount = 1;
-  double DiffuseConeAperture = 0.0;
-  double ConeStepFactor = 0.0;
-  double MaxTraceDistance = 0.0;
-  double ConeStartOffset = 0.0;
-  double TraceResolution = 1.0;
-  bool TemporalReuse = true;
-  double IndirectIntensity = 0.0;
-  bool SpecularCone = true;
-  double SpecularIntensity = 0.0;
-  double AmbientOcclusionStrength = 0.0;
-  double AmbientOcclusionFalloff = 0.0;
-  bool ConeShadows = true;
-  double ShadowConeAperture = 0.0;
-  int DebugView = 0;
-};
 
 /// The pass's settings now; HardwareConservativeRaster only where the context has it.
 Settings Snapshot(vtkVoxelGIPass* pass, bool hasConservativeRaster);

@@ -69,12 +69,6 @@ vtkVoxelGIPass::vtkVoxelGIPass()
 {
   vtkNew<vtkRenderStepsPass> steps;
   this->SetDelegatePass(steps);
-  // Defaults come from the settings table.
-  for (int i = 0; i < vtkVoxelGISettings::GetNumberOfSettings(); ++i)
-  {
-    vtkVoxelGISettings::SetValue(
-      this, vtkVoxelGISettings::GetName(i), vtkVoxelGISettings::GetDefault(i));
-  }
 }
 
 vtkVoxelGIPass::~vtkVoxelGIPass()
@@ -128,7 +122,8 @@ void vtkVoxelGIPass::SetVoxelSource(vtkVoxelGIPass* source)
 }
 
 //------------------------------------------------------------------------------
-void vtkVoxelGIPass::SetVoxelResolution(int resolution)
+// Declared by the generated settings base class, for the table's power_of_two setting.
+void vtkVoxelGIPassSettings::SetVoxelResolution(int resolution)
 {
   const int clamped = voxelgi::ClampResolution(resolution, MinResolution, MaxResolution);
   if (clamped != resolution)

@@ -22,6 +22,10 @@
  * once they change after having been voxelized: dynamic actors are revoxelized alone while
  * the static voxels are kept.
  *
+ * The settings (SetVoxelResolution(), SetBounces(), ...: name, range, default and documentation)
+ * are declared by the base class vtkVoxelGIPassSettings, generated from the settings table
+ * Source/VoxelGISettings.json.
+ *
  * With Enabled off, the pass renders exactly what its delegate renders. GI needs OpenGL 4.3
  * (compute shaders, image load/store, shader storage buffers); on an older context the pass
  * reports it once and keeps rendering VTK's image.
@@ -33,37 +37,16 @@
  * renderWindow->Render();
  * @endcode
  *
- * @sa vtkSSAOPass vtkRenderStepsPass
+ * @sa vtkVoxelGIPassSettings vtkVoxelGISettings vtkSSAOPass vtkRenderStepsPass
  */
 #ifndef vtkVoxelGIPass_h
 #define vtkVoxelGIPass_h
 
-#include "vtkOpenGLRenderPass.h"
 #include "vtkRenderingVoxelGIModule.h" // for export macro
+#include "vtkVoxelGIPassSettings.h"    // base class: the settings, generated from their table
 
-#include <cmath>  // for std::isnan
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
-
-// vtkSetClampMacro that refuses NaN (which passes any clamp) with a message naming the
-// setting, keeping its value.
-#define vtkVoxelGISetClampMacro(name, type, min, max)                                          \
-  virtual void Set##name(type _arg)                                                            \
-  {                                                                                            \
-    if (std::isnan(_arg))                                                                      \
-    {                                                                                          \
-      vtkWarningMacro(<< #name " cannot be NaN; it stays " << this->name << ".");             \
-      return;                                                                                  \
-    }                                                                                          \
-    const type clamped = _arg < min ? min : (_arg > max ? max : _arg);                         \
-    if (this->name != clamped)                                                                 \
-    {                                                                                          \
-      this->name = clamped;                                                                    \
-      this->Modified();                                                                        \
-    }                                                                                          \
-  }                                                                                            \
-  virtual type Get##name##MinValue() { return min; }                                           \
-  virtual type Get##name##MaxValue() { return max; }
 
 class vtkActor;
 class vtkFloatArray;
@@ -82,11 +65,11 @@ struct FramePlan;
 struct VoxelView;
 }
 
-class VTKRENDERINGVOXELGI_EXPORT vtkVoxelGIPass : public vtkOpenGLRenderPass
+class VTKRENDERINGVOXELGI_EXPORT vtkVoxelGIPass : public vtkVoxelGIPassSettings
 {
 public:
   static vtkVoxelGIPass* New();
-  vtkTypeMacro(vtkVoxelGIPass, vtkOpenGLRenderPass);
+  vtkTypeMacro(vtkVoxelGIPass, vtkVoxelGIPassSettings);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /**
@@ -125,333 +108,6 @@ public:
   vtkGetObjectMacro(VoxelSource, vtkVoxelGIPass);
   ///@}
 
-  ///@{
-  /**
-   * Turn global illumination on or off. Off renders exactly what the delegate renders and
-   * does no voxel work. Default: on.
-   */
-  vtkSetMacro(Enabled, vtkTypeBool);
-  vtkGetMacro(Enabled, vtkTypeBool);
-  vtkBooleanMacro(Enabled, vtkTypeBool);
-  ///@}
-
-  ///@{
-  /**
-   * Voxels per axis of the voxel grid: a power of two in [16, 512] (other values are
-   * rounded to the nearest one). Memory grows with its cube: about 60 bytes per voxel, 84
-   * in scenes with emissive props (128: 120 / 168 MiB, 256: 959 / 1343 MiB; see
-   * GetRequiredVoxelMemoryBytes()). Default: 128.
-   */
-  virtual void SetVoxelResolution(int resolution);
-  vtkGetMacro(VoxelResolution, int);
-  ///@}
-
-  ///@{
-  /**
-   * Space left around the scene in the voxel grid, as a fraction of the scene's largest
-   * extent on each side, in [0, 0.5]. Default: 0.05.
-   */
-  vtkVoxelGISetClampMacro(GridPadding, double, 0.0, 0.5);
-  vtkGetMacro(GridPadding, double);
-  ///@}
-
-  enum DebugViews
-  {
-    DEBUG_VIEW_NONE = 0,
-    DEBUG_VIEW_VOXEL_ALBEDO = 1,
-    DEBUG_VIEW_VOXEL_NORMAL = 2,
-    DEBUG_VIEW_VOXEL_EMISSION = 3,
-    DEBUG_VIEW_VOXEL_RADIANCE = 4,
-    DEBUG_VIEW_DIRECT = 5,
-    DEBUG_VIEW_INDIRECT = 6,
-    DEBUG_VIEW_AMBIENT_OCCLUSION = 7
-  };
-
-  ///@{
-  /**
-   * Show an intermediate result instead of the composited image. Voxel views show the first
-   * voxel along each camera ray: its albedo, normal (xyz mapped to rgb), emission or lit
-   * radiance (tone mapped e / (1 + e)). DIRECT shows VTK's shading with the cone shadows and
-   * AO applied, INDIRECT the indirect diffuse and specular light alone, AMBIENT_OCCLUSION the
-   * cone-traced AO. Default: DEBUG_VIEW_NONE.
-   */
-  vtkSetClampMacro(DebugView, int, DEBUG_VIEW_NONE, DEBUG_VIEW_AMBIENT_OCCLUSION);
-  vtkGetMacro(DebugView, int);
-  void SetDebugViewToNone() { this->SetDebugView(DEBUG_VIEW_NONE); }
-  void SetDebugViewToVoxelAlbedo() { this->SetDebugView(DEBUG_VIEW_VOXEL_ALBEDO); }
-  void SetDebugViewToVoxelNormal() { this->SetDebugView(DEBUG_VIEW_VOXEL_NORMAL); }
-  void SetDebugViewToVoxelEmission() { this->SetDebugView(DEBUG_VIEW_VOXEL_EMISSION); }
-  void SetDebugViewToVoxelRadiance() { this->SetDebugView(DEBUG_VIEW_VOXEL_RADIANCE); }
-  void SetDebugViewToDirect() { this->SetDebugView(DEBUG_VIEW_DIRECT); }
-  void SetDebugViewToIndirect() { this->SetDebugView(DEBUG_VIEW_INDIRECT); }
-  void SetDebugViewToAmbientOcclusion() { this->SetDebugView(DEBUG_VIEW_AMBIENT_OCCLUSION); }
-  ///@}
-
-  enum LightOcclusionModes
-  {
-    LIGHT_OCCLUSION_NONE = 0,
-    LIGHT_OCCLUSION_VOXEL_SHADOWS = 1,
-    LIGHT_OCCLUSION_SHADOW_MAPS = 2
-  };
-
-  ///@{
-  /**
-   * How the voxel lighting finds what the lights do not reach. VOXEL_SHADOWS: each voxel
-   * marches toward every light through the voxel occupancy (soft voxel shadows).
-   * SHADOW_MAPS: every light but a headlight renders depth maps from the geometry
-   * (ShadowMapResolution; one for a directional or spot light, the six faces of a cube for a
-   * point light), sharper than the voxels, and the pixels' shadows of scene lights are read
-   * from the same maps (ConeShadows); all lights of a distributed render raymarch (a rank's
-   * maps would see its own piece only). NONE: every voxel facing a light is lit. Default:
-   * LIGHT_OCCLUSION_SHADOW_MAPS (the error study: FLIP against Cycles 0.145 -> 0.124 in the
-   * glyph field under a sun, 0.167 -> 0.157 under the stream tubes, for 0.3 ms of ShadowMaps
-   * per relight on the atrium at 1080p).
-   */
-  vtkSetClampMacro(LightOcclusion, int, LIGHT_OCCLUSION_NONE, LIGHT_OCCLUSION_SHADOW_MAPS);
-  vtkGetMacro(LightOcclusion, int);
-  void SetLightOcclusionToNone() { this->SetLightOcclusion(LIGHT_OCCLUSION_NONE); }
-  void SetLightOcclusionToVoxelShadows() { this->SetLightOcclusion(LIGHT_OCCLUSION_VOXEL_SHADOWS); }
-  void SetLightOcclusionToShadowMaps() { this->SetLightOcclusion(LIGHT_OCCLUSION_SHADOW_MAPS); }
-  ///@}
-
-  ///@{
-  /**
-   * Size of each shadow map in texels, in [128, 4096]. Default: 1024.
-   */
-  vtkSetClampMacro(ShadowMapResolution, int, 128, 4096);
-  vtkGetMacro(ShadowMapResolution, int);
-  ///@}
-
-  ///@{
-  /**
-   * Bounces of indirect diffuse light between voxels, in [0, 10]. Each one cone-traces every
-   * occupied voxel and rebuilds the mipmaps, in frames whose voxels or lights changed (camera
-   * frames reuse the result). Default: 4 (closed rooms need several: the error study's FLIP
-   * falls from 0.36 at one bounce to 0.26 at four in the Cornell box).
-   */
-  vtkSetClampMacro(Bounces, int, 0, 10);
-  vtkGetMacro(Bounces, int);
-  ///@}
-
-  ///@{
-  /**
-   * How far camera-following lights (VTK's headlight, camera lights, a light kit) may turn,
-   * in degrees in [0, 180], before the voxels are lit and bounced again. Until then a frame
-   * that moves the camera traces with the voxel light of the last relight: only the indirect
-   * light lags, VTK's direct light follows the camera exactly. 0 relights at every turn.
-   * Default: 45 (docs/reference.md gives the error against the turn, docs/performance.md the
-   * cost).
-   */
-  vtkVoxelGISetClampMacro(CameraLightTurn, double, 0.0, 180.0);
-  vtkGetMacro(CameraLightTurn, double);
-  ///@}
-
-  ///@{
-  /**
-   * Most samples per pixel of the G-buffer, in [0, 16], in a multisampled window: VTK draws
-   * its opaque geometry with the window's count up to this, resolved before tracing, so that
-   * edges, lines on surfaces and thin text keep VTK's anti-aliasing. 0 or 1: one sample
-   * (edges aliased). Default: 0 (docs/performance.md gives the cost).
-   */
-  vtkSetClampMacro(GBufferSamples, int, 0, 16);
-  vtkGetMacro(GBufferSamples, int);
-  ///@}
-
-  ///@{
-  /**
-   * Anisotropic mipmaps (six directional volumes) rather than one isotropic mip chain:
-   * less light leaking through thin walls, 6/8 more memory. Default: on.
-   */
-  vtkSetMacro(AnisotropicMipmaps, vtkTypeBool);
-  vtkGetMacro(AnisotropicMipmaps, vtkTypeBool);
-  vtkBooleanMacro(AnisotropicMipmaps, vtkTypeBool);
-  ///@}
-
-  ///@{
-  /**
-   * Diffuse cones per pixel (and per voxel for bounces), in [1, 16], spread with a cosine
-   * distribution over the normal's hemisphere. Default: 16.
-   */
-  vtkSetClampMacro(DiffuseConeCount, int, 1, 16);
-  vtkGetMacro(DiffuseConeCount, int);
-  ///@}
-
-  ///@{
-  /**
-   * Full aperture of the diffuse cones in degrees, in [5, 120]. Default: 60.
-   */
-  vtkVoxelGISetClampMacro(DiffuseConeAperture, double, 5.0, 120.0);
-  vtkGetMacro(DiffuseConeAperture, double);
-  ///@}
-
-  ///@{
-  /**
-   * Cone step length as a fraction of the cone's diameter, in [0.05, 2]: smaller is finer
-   * and slower (opacity is corrected for the step). Default: 0.75.
-   */
-  vtkVoxelGISetClampMacro(ConeStepFactor, double, 0.05, 2.0);
-  vtkGetMacro(ConeStepFactor, double);
-  ///@}
-
-  ///@{
-  /**
-   * Longest cone, as a fraction of the voxel grid's size, in [0, 2]. 0 traces nothing.
-   * Default: 1.75, across the grid's diagonal, so that no cone stops inside a closed room.
-   */
-  vtkVoxelGISetClampMacro(MaxTraceDistance, double, 0.0, 2.0);
-  vtkGetMacro(MaxTraceDistance, double);
-  ///@}
-
-  ///@{
-  /**
-   * How far cones start from the surface, in voxels along the normal, in [0, 8]: keeps a
-   * surface from lighting itself through its own voxels. Default: 1.5.
-   */
-  vtkVoxelGISetClampMacro(ConeStartOffset, double, 0.0, 8.0);
-  vtkGetMacro(ConeStartOffset, double);
-  ///@}
-
-  ///@{
-  /**
-   * Resolution of the per-pixel cone tracing relative to the image, in [0.25, 1]. Below 1
-   * the traced light is upsampled edge-aware (weighted by position and normal similarity)
-   * when composited: 0.5 traces a quarter of the pixels. Default: 1.
-   */
-  vtkVoxelGISetClampMacro(TraceResolution, double, 0.25, 1.0);
-  vtkGetMacro(TraceResolution, double);
-  ///@}
-
-  ///@{
-  /**
-   * Temporal reuse: in frames where only the camera moved, trace one tile of the image in
-   * four (rotating, so every pixel is re-traced at least every fourth frame) and take the
-   * others from the previous frame at their reprojected surface, except where that surface
-   * differs (position, normal, or the view direction of a specular surface): those are
-   * traced too. Any change of the voxels, the lights or the settings traces everything. Off
-   * traces every pixel every frame. Default: on.
-   */
-  vtkSetMacro(TemporalReuse, vtkTypeBool);
-  vtkGetMacro(TemporalReuse, vtkTypeBool);
-  vtkBooleanMacro(TemporalReuse, vtkTypeBool);
-  ///@}
-
-  ///@{
-  /**
-   * Scale of the indirect diffuse light, in [0, 10]. Default: 1.
-   */
-  vtkVoxelGISetClampMacro(IndirectIntensity, double, 0.0, 10.0);
-  vtkGetMacro(IndirectIntensity, double);
-  ///@}
-
-  ///@{
-  /**
-   * One specular cone per pixel for glossy reflections, its aperture following the
-   * material's specular power (vtkProperty::SpecularPower). Default: on.
-   */
-  vtkSetMacro(SpecularCone, vtkTypeBool);
-  vtkGetMacro(SpecularCone, vtkTypeBool);
-  vtkBooleanMacro(SpecularCone, vtkTypeBool);
-  ///@}
-
-  ///@{
-  /**
-   * Scale of the indirect specular light, in [0, 10]. Default: 1.
-   */
-  vtkVoxelGISetClampMacro(SpecularIntensity, double, 0.0, 10.0);
-  vtkGetMacro(SpecularIntensity, double);
-  ///@}
-
-  ///@{
-  /**
-   * How much the cone-traced ambient occlusion darkens VTK's ambient term (the property's
-   * ambient coefficient times its ambient colour), in [0, 1] (0: AO off). The lights' direct
-   * light, the cone-traced indirect light (occluded by the cones themselves) and emitters'
-   * light are never darkened by it. Default: 1 (the ambient term stands for light from all
-   * around, which occluders block entirely).
-   */
-  vtkVoxelGISetClampMacro(AmbientOcclusionStrength, double, 0.0, 1.0);
-  vtkGetMacro(AmbientOcclusionStrength, double);
-  ///@}
-
-  ///@{
-  /**
-   * Falloff of occluders' weight with distance in the AO, per voxel, in [0, 10]: an
-   * occluder t voxels away counts 1 / (1 + falloff t). Default: 0.05.
-   */
-  vtkVoxelGISetClampMacro(AmbientOcclusionFalloff, double, 0.0, 10.0);
-  vtkGetMacro(AmbientOcclusionFalloff, double);
-  ///@}
-
-  ///@{
-  /**
-   * Shadows of the lights (headlights excepted) in the pixels: the occluded part of each
-   * light's contribution is removed from VTK's shading. A scene light with a shadow map
-   * (LightOcclusion SHADOW_MAPS) is looked up there, filtered over 3 x 3 texels; other lights
-   * (camera lights, whose maps lag while they turn, every light of a distributed render, and
-   * the lights of a pass that shares another's voxels unless they are the other's lights)
-   * trace a cone through the voxels
-   * (ShadowConeAperture). Default: on.
-   */
-  vtkSetMacro(ConeShadows, vtkTypeBool);
-  vtkGetMacro(ConeShadows, vtkTypeBool);
-  vtkBooleanMacro(ConeShadows, vtkTypeBool);
-  ///@}
-
-  ///@{
-  /**
-   * Full aperture of the shadow cones (lights without a pixel shadow map, see ConeShadows) in
-   * degrees, in [0.5, 60]: wider is softer. Default: 1
-   * (the error study: the sharpest shadows are the closest to Cycles' in every lit scene;
-   * 6 -> 1 took the isosurface room's FLIP 0.326 -> 0.280 and the stream tubes' 0.167 ->
-   * 0.127, for +0.06 to +0.2 ms of ConeTrace per 1080p frame).
-   */
-  vtkVoxelGISetClampMacro(ShadowConeAperture, double, 0.5, 60.0);
-  vtkGetMacro(ShadowConeAperture, double);
-  ///@}
-
-  ///@{
-  /**
-   * Treat an actor that changes after it was voxelized as dynamic from then on, so later
-   * changes revoxelize it alone instead of the whole scene. Default: on.
-   */
-  vtkSetMacro(AutoDynamic, vtkTypeBool);
-  vtkGetMacro(AutoDynamic, vtkTypeBool);
-  vtkBooleanMacro(AutoDynamic, vtkTypeBool);
-  ///@}
-
-  enum UpdatePolicies
-  {
-    UPDATE_ON_CHANGE = 0,
-    UPDATE_EVERY_FRAME = 1,
-    UPDATE_EVERY_N_FRAMES = 2,
-    UPDATE_ON_DEMAND = 3
-  };
-
-  ///@{
-  /**
-   * When the voxels are rebuilt. ON_CHANGE: whenever an actor, mapper, input, property or
-   * transform changed (only the changed dynamic actors when possible). EVERY_FRAME: a full
-   * revoxelization every frame. EVERY_N_FRAMES: changes are picked up at most every
-   * UpdateInterval frames. ON_DEMAND: only after Invalidate(). Changes of the voxel settings
-   * (resolution, padding) always rebuild. Lights and camera are followed every frame whatever
-   * the policy. Default: UPDATE_ON_CHANGE.
-   */
-  vtkSetClampMacro(UpdatePolicy, int, UPDATE_ON_CHANGE, UPDATE_ON_DEMAND);
-  vtkGetMacro(UpdatePolicy, int);
-  void SetUpdatePolicyToOnChange() { this->SetUpdatePolicy(UPDATE_ON_CHANGE); }
-  void SetUpdatePolicyToEveryFrame() { this->SetUpdatePolicy(UPDATE_EVERY_FRAME); }
-  void SetUpdatePolicyToEveryNFrames() { this->SetUpdatePolicy(UPDATE_EVERY_N_FRAMES); }
-  void SetUpdatePolicyToOnDemand() { this->SetUpdatePolicy(UPDATE_ON_DEMAND); }
-  ///@}
-
-  ///@{
-  /**
-   * Frames between updates for UPDATE_EVERY_N_FRAMES, in [1, 1000]. Default: 10.
-   */
-  vtkSetClampMacro(UpdateInterval, int, 1, 1000);
-  vtkGetMacro(UpdateInterval, int);
-  ///@}
-
   /**
    * Rebuild the voxels (fully) at the next render, whatever the update policy.
    */
@@ -468,31 +124,10 @@ public:
    */
   void RenderRanks(vtkRenderer* renderer);
 
-  ///@{
-  /**
-   * Rasterize conservatively with the GPU's GL_NV_conservative_raster where the context has
-   * it; otherwise (or when off) triangles are dilated in the geometry shader. Both are
-   * conservative. Default: on.
-   */
-  vtkSetMacro(HardwareConservativeRaster, vtkTypeBool);
-  vtkGetMacro(HardwareConservativeRaster, vtkTypeBool);
-  vtkBooleanMacro(HardwareConservativeRaster, vtkTypeBool);
-  ///@}
-
   /**
    * Whether the last voxelization used the hardware conservative rasterizer.
    */
   bool GetUsedHardwareConservativeRaster() const;
-
-  ///@{
-  /**
-   * Measure each stage's GPU time with timer queries (GetStageTime()). Waiting for the
-   * results costs a little, hence off by default.
-   */
-  vtkSetMacro(TimeStages, vtkTypeBool);
-  vtkGetMacro(TimeStages, vtkTypeBool);
-  vtkBooleanMacro(TimeStages, vtkTypeBool);
-  ///@}
 
   /**
    * Emission of a prop, as linear RGB radiance (0 or absent: not emissive). Stored in the
@@ -678,36 +313,6 @@ protected:
 
   vtkRenderPass* DelegatePass = nullptr;
   vtkVoxelGIPass* VoxelSource = nullptr;
-  // Settings: defaults (and ranges) from the settings table, Source/VoxelGISettings.json.
-  vtkTypeBool Enabled{};
-  int VoxelResolution{};
-  double GridPadding{};
-  int DebugView{};
-  vtkTypeBool AutoDynamic{};
-  vtkTypeBool HardwareConservativeRaster{};
-  int UpdatePolicy{};
-  int UpdateInterval{};
-  vtkTypeBool TimeStages{};
-  int LightOcclusion{};
-  int ShadowMapResolution{};
-  int Bounces{};
-  double CameraLightTurn{};
-  int GBufferSamples{};
-  vtkTypeBool AnisotropicMipmaps{};
-  int DiffuseConeCount{};
-  double DiffuseConeAperture{};
-  double ConeStepFactor{};
-  double MaxTraceDistance{};
-  double ConeStartOffset{};
-  double TraceResolution{};
-  vtkTypeBool TemporalReuse{};
-  double IndirectIntensity{};
-  vtkTypeBool SpecularCone{};
-  double SpecularIntensity{};
-  double AmbientOcclusionStrength{};
-  double AmbientOcclusionFalloff{};
-  vtkTypeBool ConeShadows{};
-  double ShadowConeAperture{};
   bool GIActive = false;
 
 private:

@@ -1,9 +1,13 @@
 """Every setting of the settings table (Source/VoxelGISettings.json) is reachable from Python
-with its default, range and clamping, and the pass has no setting the table lacks.
+with its default, range (Get<Name>MinValue/MaxValue) and clamping, its enumeration's constants
+and Set<Name>To<Label>(), and the pass has no setting the table lacks. The setters are generated
+from the table (vtkVoxelGIPassSettings, the pass's base class): this checks that VTK's wrapper
+wraps them.
 
     test_settings.py SETTINGS_JSON
 """
 import json
+import re
 import sys
 
 from vtkmodules.vtkRenderingOpenGL2 import vtkOpenGLRenderPass
@@ -25,6 +29,11 @@ def close(a, b):
 
 
 TABLE = []
+
+
+def snake(label):
+    """Enumeration label to the enum constant's suffix: EveryNFrames -> EVERY_N_FRAMES."""
+    return re.sub(r"(?<=[a-z0-9])(?=[A-Z])|(?<=[A-Z])(?=[A-Z][a-z])", "_", label).upper()
 
 
 def check_set_value():
@@ -80,6 +89,17 @@ def main(table_path):
             check(get() == 1, "%s: On does not turn it on" % name)
             continue
         lo, hi = s["min"], s["max"]
+        for bound, expected in (("Min", lo), ("Max", hi)):
+            method = getattr(gi, "Get%s%sValue" % (name, bound), None)
+            check(method is not None, "%s: no Get%s%sValue in Python" % (name, name, bound))
+            if method:
+                check(close(method(), expected), "%s: Get%s%sValue() is %s, the table says %s"
+                      % (name, name, bound, method(), expected))
+        for index, label in enumerate(s.get("values", [])):
+            constant = "%s_%s" % (s["constant_prefix"], snake(label))
+            value = getattr(vtkVoxelGIPass, constant, None)
+            check(value == lo + index, "%s: vtkVoxelGIPass.%s is %r, expected %d"
+                  % (name, constant, value, lo + index))
         delta = 1 if s["type"] in ("int", "enum") else 0.5 * (hi - lo)
         for value, expected in ((lo, lo), (hi, hi), (lo - delta, lo), (hi + delta, hi)):
             put(value)

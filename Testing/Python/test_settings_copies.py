@@ -1,18 +1,26 @@
-"""The settings table (Source/VoxelGISettings.json) is the single source of the settings' ranges
-and defaults; this test checks the places that still state them again:
+"""The settings table (Source/VoxelGISettings.json) is the single source of the settings; the
+C++ that states them is generated from it (Source/GenerateSettings.cmake). This test checks
+that what was generated agrees with the table, and that no hand-written copy came back:
 
-- vtkVoxelGIPass.h: each vtkSetClampMacro's range (enumerations: the enum's first and last
-  values, and one constant per label, in the table's order), the member initialiser where
-  the header gives a value, and the "Default: ..." (or "on/off by default") and "in [min, max]"
-  text of the setting's doc comment;
+- vtkVoxelGIPassSettings.h (generated, vtkVoxelGIPass's base class): each setting's setter
+  (vtkSetClampMacro's range; enumerations: the enum's first and last values, and one constant
+  per label, in the table's order, named <constant_prefix>_<LABEL>; power_of_two: a declared
+  Set<Name>(int)), its member initialised to the default, and its doc comment: the table's
+  "details" word for word, stating the default ("Default: ..." or "on/off by default") and,
+  for numbers, the range ("in [min, max]");
+- SettingsSnapshot.h/.cxx (generated, internal): one member of voxelgi::Settings per setting,
+  of the setting's type (bool, int, double; enumerations int) with its default, and nothing
+  else; SnapshotSettings fills each from the pass's getter;
+- vtkVoxelGIPass.h and Frame.h (hand-written): no setter, getter, member or enum of a setting
+  of the table, and no struct Settings;
 - README.md: its settings table is exactly the one generate_settings_readme.py makes;
-- the table itself: defaults in range, enumerations with one label per value, power-of-two
-  settings with powers of two as range and default.
+- the table itself: defaults in range, enumerations with one label per value and their enum's
+  name and constant prefix, power-of-two settings with powers of two as range and default.
 
-It reads the header as text (regular expressions over the whole file, not lines), so
-reformatting does not matter. Each failure names the setting and the copy that disagrees.
+It reads the headers as text (regular expressions over the whole file, not lines), so
+reformatting does not matter. Each failure names the setting and the file that disagrees.
 
-    test_settings_copies.py SETTINGS_JSON HEADER README
+    test_settings_copies.py SETTINGS_JSON GENERATED_DIR PASS_HEADER FRAME_HEADER README
 """
 import json
 import os
@@ -130,6 +138,10 @@ def shown(setting, value):
 def check_table(s):
     name = s["name"]
     copy = "VoxelGISettings.json"
+    if not s.get("details", "").strip():
+        fail(name, copy, "has no \"details\" (the header's documentation of the setting)")
+    if s["type"] == "enum" and not (s.get("enum") and s.get("constant_prefix")):
+        fail(name, copy, "needs \"enum\" (the C++ enum's name) and \"constant_prefix\"")
     if s["type"] == "bool":
         return
     if not s["min"] <= s["default"] <= s["max"]:
@@ -147,7 +159,7 @@ def check_table(s):
 
 def check_header(s, header):
     name = s["name"]
-    copy = "vtkVoxelGIPass.h"
+    copy = "vtkVoxelGIPassSettings.h"
     setter = header.setter(name)
     if setter is None:
         fail(name, copy, "declares no setter (vtkSetClampMacro, vtkSetMacro or Set%s())" % name)
@@ -173,7 +185,9 @@ def check_header(s, header):
             constants.append(token.split("::")[-1])
 
     initialiser = header.initialiser(name)
-    if initialiser is not None:
+    if initialiser is None:
+        fail(name, copy, "has no member initialised to the default")
+    else:
         value = header.value(initialiser)
         if value is None or not close(value, s["default"]):
             fail(name, copy + " member initialiser", "is '%s', the table's default is %s"
@@ -184,6 +198,8 @@ def check_header(s, header):
     if doc is None:
         fail(name, copy, "has no doc comment right before the setter")
     else:
+        if " ".join(doc.split()) != " ".join(s.get("details", "").split()):
+            fail(name, copy + " doc comment", "is not the table's details: %r" % " ".join(doc.split()))
         stated = (re.search(r"Default:\s*([A-Za-z_][\w:]*|[-+]?\d+(?:\.\d+)?)", doc)
                   or re.search(r"\b(on|off)\s+by\s+default", doc))
         if stated is None:
@@ -202,6 +218,9 @@ def check_header(s, header):
                      % (stated.group(0), shown(s, s["default"])))
         number = r"\s*([-+]?\d+(?:\.\d+)?)\s*"
         stated_range = re.search(r"\bin\s+\[%s,%s\]" % (number, number), doc)
+        if stated_range is None and s["type"] in ("int", "double"):
+            fail(name, copy + " doc comment", "states no range ('in [%g, %g]')"
+                 % (s["min"], s["max"]))
         if stated_range and s["type"] in ("int", "double"):
             lo, hi = float(stated_range.group(1)), float(stated_range.group(2))
             if not (close(lo, s["min"]) and close(hi, s["max"])):
@@ -219,9 +238,77 @@ def check_header(s, header):
                  % (enum[0][0], values, s["min"], s["max"], len(s["values"])))
             return
         for (constant, value), label in zip(enum, s["values"]):
-            if constant != snake(label) and not constant.endswith("_" + snake(label)):
+            if constant != "%s_%s" % (s.get("constant_prefix"), snake(label)):
                 fail(name, copy + " enum", "constant %s (%d) is not the table's label %s"
                      % (constant, value, label))
+        if not re.search(r"\benum\s+%s\s*\{" % s.get("enum"), header.code):
+            fail(name, copy, "has no enum %s" % s.get("enum"))
+        for label in s["values"]:
+            if not re.search(r"\bvoid\s+Set%sTo%s\s*\(\s*\)" % (name, label), header.code):
+                fail(name, copy, "has no Set%sTo%s()" % (name, label))
+    if s["type"] == "bool":
+        if not re.search(r"\bvtkBooleanMacro\(\s*%s\s*," % name, header.code):
+            fail(name, copy, "has no vtkBooleanMacro (%sOn/Off)" % name)
+
+
+def check_snapshot(settings, header_path, source_path):
+    """voxelgi::Settings has exactly the table's settings, with their types and defaults, and
+    SnapshotSettings fills each from the pass."""
+    with open(header_path) as f:
+        code = blank_comments(f.read())
+    with open(source_path) as f:
+        fill = blank_comments(f.read())
+    copy = os.path.basename(header_path)
+    body = re.search(r"\bstruct\s+Settings\s*\{(.*?)\};", code, flags=re.S)
+    if body is None:
+        failures.append("%s: no struct Settings" % copy)
+        return
+    members = {m.group(2): (m.group(1), m.group(3)) for m in re.finditer(
+        r"\b(bool|int|double)\s+(\w+)\s*=\s*([^;]+);", body.group(1))}
+    enums = parse_enums(code)
+    constants = {name: value for enum in enums for name, value in enum}
+    for s in settings:
+        name = s["name"]
+        member = members.pop(name, None)
+        if member is None:
+            fail(name, copy, "voxelgi::Settings has no member %s" % name)
+            continue
+        expected = {"bool": "bool", "int": "int", "enum": "int", "double": "double"}[s["type"]]
+        if member[0] != expected:
+            fail(name, copy, "voxelgi::Settings has it as %s, not %s" % (member[0], expected))
+        text = member[1].strip()
+        value = constants.get(text, {"true": 1.0, "false": 0.0}.get(text))
+        if value is None:
+            try:
+                value = float(text)
+            except ValueError:
+                value = None
+        if value is None or not close(value, s["default"]):
+            fail(name, copy, "voxelgi::Settings defaults it to '%s', the table to %s"
+                 % (text, shown(s, s["default"])))
+        getter = r"\bc\.%s\s*=\s*pass->Get%s\(\)" % (name, name)
+        if not re.search(getter, fill):
+            fail(name, os.path.basename(source_path), "SnapshotSettings does not fill it")
+    for name in members:
+        fail(name, copy, "voxelgi::Settings has it, the table does not")
+
+
+def check_no_copies(settings, path):
+    """A hand-written header restates no setting: no setter, getter, member or enum of one."""
+    copy = os.path.basename(path) + " (hand-written)"
+    with open(path) as f:
+        code = blank_comments(f.read())
+    if re.search(r"\bstruct\s+Settings\s*\{", code):
+        failures.append("%s: defines struct Settings, which is generated" % copy)
+    for s in settings:
+        name = s["name"]
+        patterns = [r"\bvtk(?:Set|Get|SetClamp|VoxelGISetClamp|Boolean)Macro\(\s*%s\s*," % name,
+                    r"\b(?:Set|Get)%s\s*\(" % name,
+                    r"\b(?:vtkTypeBool|bool|int|double)\s+%s\s*[;={]" % name]
+        if s["type"] == "enum":
+            patterns.append(r"\benum\s+%s\b" % s.get("enum"))
+        if any(re.search(pattern, code) for pattern in patterns):
+            fail(name, copy, "declares it again; the settings are generated from the table")
 
 
 def check_readme(settings, path, generator):
@@ -249,25 +336,29 @@ def check_readme(settings, path, generator):
                     "it with python3 Source/generate_settings_readme.py" % copy)
 
 
-def main(table_path, header_path, readme_path):
+def main(table_path, generated_dir, pass_header, frame_header, readme_path):
     with open(table_path) as f:
         settings = json.load(f)["settings"]
     # the README's generator lives next to the table
     sys.path.insert(0, os.path.dirname(os.path.abspath(table_path)))
     import generate_settings_readme
 
-    header = Header(header_path)
+    header = Header(os.path.join(generated_dir, "vtkVoxelGIPassSettings.h"))
     for s in settings:
         check_table(s)
         check_header(s, header)
+    check_snapshot(settings, os.path.join(generated_dir, "SettingsSnapshot.h"),
+                   os.path.join(generated_dir, "SettingsSnapshot.cxx"))
+    for path in (pass_header, frame_header):
+        check_no_copies(settings, path)
     check_readme(settings, readme_path, generate_settings_readme)
 
     for failure in failures:
         print("FAILED:", failure)
-    print("%d settings checked against vtkVoxelGIPass.h and README.md, %d failures"
-          % (len(settings), len(failures)))
+    print("%d settings checked against the generated headers, vtkVoxelGIPass.h, Frame.h and "
+          "README.md, %d failures" % (len(settings), len(failures)))
     sys.exit(1 if failures else 0)
 
 
 if __name__ == "__main__":
-    main(*sys.argv[1:4])
+    main(*sys.argv[1:6])
