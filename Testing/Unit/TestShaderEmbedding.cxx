@@ -41,7 +41,7 @@ TEST(ShaderEmbedding, ComputeShadersStartWithTheInterface)
   EXPECT_EQ(trace.rfind("#line 1 " + std::to_string(interface) + "\n", 0), 0u);
   EXPECT_NE(trace.find("#define VOXELGI_MAX_LIGHTS 16"), std::string::npos);
   // voxel_grid.glsl is included by three of its includes, expanded once.
-  EXPECT_EQ(Count(trace, "uniform VoxelGridBlock"), 1);
+  EXPECT_EQ(Count(trace, "VOXELGI_UNIFORM_BLOCK(VoxelGridBlock,"), 1);
   EXPECT_EQ(Count(trace, "#include"), 0);
 }
 
