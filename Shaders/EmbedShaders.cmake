@@ -6,9 +6,10 @@
 # `#include "file.glsl"` is replaced by that file's contents (recursively, each file once), so
 # stages share GLSL without copies. shader_interface.h (constants and binding points shared
 # with the C++ stages) goes in front of every shader, after VTK's `//VTK::System::Dec` line
-# where a shader starts with it (VTK puts `#version` there). `#line <n> <file number>`
-# directives keep GLSL compiler messages pointing into the right file and line;
-# `voxelgi::shaders::file_names[<file number>]` names the file.
+# where a shader starts with it (VTK puts `#version` there); an `#include "shader_interface.h"`
+# (the uniform block headers *_block.h have one, for C++) is then dropped as already included.
+# `#line <n> <file number>` directives keep GLSL compiler messages pointing into the right file
+# and line; `voxelgi::shaders::file_names[<file number>]` names the file.
 
 set(_voxelgi_files "")
 
@@ -78,7 +79,7 @@ set(interface "#line 1 ${interface_number}\n${interface}")
 foreach (shader IN LISTS SHADERS)
   get_filename_component(fname "${shader}" NAME)
   string(MAKE_C_IDENTIFIER "${fname}" ident)
-  set(_voxelgi_seen "")
+  set(_voxelgi_seen "shader_interface.h")
   _voxelgi_expand("${SHADER_DIR}/${fname}" body 0)
   if (body MATCHES "^//VTK::System::Dec\n")
     string(REGEX REPLACE "^//VTK::System::Dec\n" "//VTK::System::Dec\n${interface}" body "${body}")

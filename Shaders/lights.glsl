@@ -1,21 +1,10 @@
-// The renderer's lights in voxel grid coordinates (one uniform block, filled once per frame)
-// and VTK's light model (as vtkOpenGLPolyDataMapper shades: positional attenuation, spot cone
-// and exponent) evaluated in the same space.
+// The renderer's lights in voxel grid coordinates (one uniform block, filled once per frame;
+// light_block.h declares it for the shaders and LightBlock.cxx alike) and VTK's light model
+// (as vtkOpenGLPolyDataMapper shades: positional attenuation, spot cone and exponent)
+// evaluated in the same space.
 #include "voxel_grid.glsl"
 
-struct VoxelLight
-{
-  vec4 position;    // xyz: position (grid voxels); w: 1 positional, 0 directional
-  vec4 direction;   // xyz: unit direction the light travels; w: cos(cone angle), -2 if no spot
-  vec4 color;       // rgb: colour x intensity; w: spot exponent
-  vec4 attenuation; // xyz: constant, linear, quadratic (world units); w: 1 for a headlight
-};
-
-layout(std140, binding = VOXELGI_LIGHT_BLOCK_BINDING) uniform VoxelLightBlock
-{
-  VoxelLight voxelLights[VOXELGI_MAX_LIGHTS];
-  ivec4 voxelLightInfo; // x: light count, y: two-sided lighting
-};
+#include "light_block.h"
 
 // Unit direction toward light `l` from p (grid coordinates), the distance to it (voxels;
 // huge for directional lights) and VTK's attenuation there (spot cone included).

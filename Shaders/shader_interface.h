@@ -1,6 +1,8 @@
 /* Constants and binding points shared by the C++ stages and the GLSL shaders. The stages
    include this file; the shader embedder (EmbedShaders.cmake) puts it in front of every
-   embedded shader. Plain preprocessor definitions only, so that both languages read it. */
+   embedded shader. Plain preprocessor definitions only, so that both languages read it. The
+   uniform blocks are declared once for both languages too, in the *_block.h headers (see
+   shader_interop.h). */
 #ifndef VOXELGI_SHADER_INTERFACE
 #define VOXELGI_SHADER_INTERFACE
 

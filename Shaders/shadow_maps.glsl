@@ -6,19 +6,7 @@
 
 uniform sampler2DArrayShadow shadowMaps;
 
-layout(std140, binding = VOXELGI_SHADOW_BLOCK_BINDING) uniform VoxelShadowBlock
-{
-  mat4 shadowMatrices[VOXELGI_MAX_SHADOW_LAYERS];
-  // x: first layer (-1: no map), y: layers (1, or 6 for a point light: +x -x +y -y +z -z),
-  // z: 1 when the map stays valid for the pixels between relights (a scene light; a camera
-  // light's map lags while it turns)
-  ivec4 shadowLights[VOXELGI_MAX_LIGHTS];
-  // x + y * distance from the light: a map texel's width in voxels there
-  vec4 shadowTexels[VOXELGI_MAX_LIGHTS];
-  // x: 1 when every light that casts shadows (every light but a headlight) has maps valid
-  // for the pixels
-  ivec4 shadowInfo;
-};
+#include "shadow_block.h"
 
 bool shadowMapped(int l)
 {

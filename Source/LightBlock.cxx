@@ -101,19 +101,19 @@ void LightBlock::Pack(vtkLight* light, const VoxelGrid& grid, Light& l)
   const bool positional = light->GetPositional() != 0;
   for (int a = 0; a < 3; ++a)
   {
-    l.Position[a] = static_cast<float>(p[a]);
-    l.Direction[a] = static_cast<float>(direction[a]);
-    l.Color[a] = static_cast<float>(light->GetDiffuseColor()[a] * light->GetIntensity());
-    l.Attenuation[a] = static_cast<float>(light->GetAttenuationValues()[a]);
+    l.position[a] = static_cast<float>(p[a]);
+    l.direction[a] = static_cast<float>(direction[a]);
+    l.color[a] = static_cast<float>(light->GetDiffuseColor()[a] * light->GetIntensity());
+    l.attenuation[a] = static_cast<float>(light->GetAttenuationValues()[a]);
   }
-  l.Position[3] = positional ? 1.0f : 0.0f;
+  l.position[3] = positional ? 1.0f : 0.0f;
   // VTK treats positional lights with a cone angle below 90 degrees as spots.
   const double cone = light->GetConeAngle();
-  l.Direction[3] = (positional && cone < 90.0)
+  l.direction[3] = (positional && cone < 90.0)
     ? static_cast<float>(std::cos(vtkMath::RadiansFromDegrees(cone)))
     : -2.0f;
-  l.Color[3] = static_cast<float>(light->GetExponent());
-  l.Attenuation[3] = light->LightTypeIsHeadlight() ? 1.0f : 0.0f;
+  l.color[3] = static_cast<float>(light->GetExponent());
+  l.attenuation[3] = light->LightTypeIsHeadlight() ? 1.0f : 0.0f;
 }
 
 bool LightBlock::Gather(
@@ -156,10 +156,10 @@ bool LightBlock::Gather(
     }
     this->Used.push_back(light);
     this->Follows[count] = !light->LightTypeIsSceneLight();
-    Pack(light, grid, block.Lights[count++]);
+    Pack(light, grid, block.voxelLights[count++]);
   }
-  block.Info[0] = count;
-  block.Info[1] = renderer->GetTwoSidedLighting() ? 1 : 0;
+  block.voxelLightInfo[0] = count;
+  block.voxelLightInfo[1] = renderer->GetTwoSidedLighting() ? 1 : 0;
   if (invalid > 0 && !this->WarnedInvalid)
   {
     std::string list;
@@ -223,15 +223,15 @@ double LightBlock::CameraTurnSinceLit() const
     {
       continue;
     }
-    const Light& now = this->Data.Lights[l];
-    const Light& then = this->Lit.Lights[l];
-    turn = std::max(turn, AngleBetween(now.Direction, then.Direction, 0.0f));
-    if (now.Position[3] != 0.0f)
+    const Light& now = this->Data.voxelLights[l];
+    const Light& then = this->Lit.voxelLights[l];
+    turn = std::max(turn, AngleBetween(now.direction.v, then.direction.v, 0.0f));
+    if (now.position[3] != 0.0f)
     {
-      turn = std::max(turn, AngleBetween(now.Position, then.Position, this->Centre));
+      turn = std::max(turn, AngleBetween(now.position.v, then.position.v, this->Centre));
     }
-    std::copy(then.Position, then.Position + 3, placed.Lights[l].Position);
-    std::copy(then.Direction, then.Direction + 3, placed.Lights[l].Direction);
+    std::copy(then.position.v, then.position.v + 3, placed.voxelLights[l].position.v);
+    std::copy(then.direction.v, then.direction.v + 3, placed.voxelLights[l].direction.v);
   }
   return std::memcmp(&placed, &this->Lit, sizeof(Block)) == 0 ? turn : never;
 }

@@ -1,15 +1,17 @@
 /**
- * The renderer's switched-on lights in voxel grid coordinates, in the std140 layout of the
- * `VoxelLightBlock` uniform block (Shaders/lights.glsl), uploaded when they change and bound at
- * VOXELGI_LIGHT_BLOCK_BINDING for LightVoxels, VoxelBounce and ConeTrace.
+ * The renderer's switched-on lights in voxel grid coordinates, in the `VoxelLightBlock` uniform
+ * block (Shaders/light_block.h, the one declaration C++ and GLSL share), uploaded when they
+ * change and bound at VOXELGI_LIGHT_BLOCK_BINDING for LightVoxels, VoxelBounce and ConeTrace.
  */
 #ifndef VoxelGILightBlock_h
 #define VoxelGILightBlock_h
 
 #include "GLHelpers.h"
+#include "light_block.h"
 #include "shader_interface.h"
 
 #include <array>
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -46,18 +48,13 @@ public:
   void ReleaseGraphicsResources(vtkWindow* window);
 
 private:
-  struct Light
-  {
-    float Position[4];
-    float Direction[4];
-    float Color[4];
-    float Attenuation[4];
-  };
-  struct Block
-  {
-    Light Lights[MaxLights];
-    int Info[4];
-  };
+  using Light = glsl::VoxelLight;
+  using Block = glsl::VoxelLightBlock;
+  // std140: a struct of four vec4s is 64 bytes, its array's stride too
+  static_assert(sizeof(Light) == 64 && offsetof(Light, attenuation) == 48, "not std140");
+  static_assert(offsetof(Block, voxelLightInfo) == 64 * MaxLights &&
+      sizeof(Block) == 64 * MaxLights + 16,
+    "not std140");
   /// One light in grid coordinates, in the block's layout.
   static void Pack(vtkLight* light, const VoxelGrid& grid, Light& packed);
 

@@ -137,7 +137,7 @@ bool ShadowMaps::Prepare(const Frame& frame, std::string& error)
   {
     vtkLight* light = l < used.size() ? used[l] : nullptr;
     const int layers = LayerCount(light);
-    int* entry = this->Data.Lights + 4 * l;
+    glsl::ivec4& entry = this->Data.shadowLights[l];
     entry[0] = layers > 0 ? count : -1;
     entry[1] = layers;
     entry[2] = layers > 0 && light->LightTypeIsSceneLight() ? 1 : 0;
@@ -145,7 +145,7 @@ bool ShadowMaps::Prepare(const Frame& frame, std::string& error)
     pixelsMapsOnly = pixelsMapsOnly && (!light || light->LightTypeIsHeadlight() || entry[2]);
     count += layers;
   }
-  this->Data.Info[0] = pixelsMapsOnly ? 1 : 0;
+  this->Data.shadowInfo[0] = pixelsMapsOnly ? 1 : 0;
   if (count == 0)
   {
     this->Maps.Release();
@@ -204,12 +204,12 @@ void ShadowMaps::Run(const Frame& frame)
     }
     for (std::size_t l = 0; l < used.size() && l < MaxLights; ++l)
     {
-      const int first = this->Data.Lights[4 * l];
-      for (int face = 0; face < this->Data.Lights[4 * l + 1]; ++face)
+      const int first = this->Data.shadowLights[l][0];
+      for (int face = 0; face < this->Data.shadowLights[l][1]; ++face)
       {
         const glm::dvec2 texel = AimLightCamera(camera, used[l], grid, face, size);
-        this->Data.Texels[4 * l] = static_cast<float>(texel.x);
-        this->Data.Texels[4 * l + 1] = static_cast<float>(texel.y);
+        this->Data.shadowTexels[l][0] = static_cast<float>(texel.x);
+        this->Data.shadowTexels[l][1] = static_cast<float>(texel.y);
         ostate->vtkglBindFramebuffer(GL_FRAMEBUFFER, this->Maps.PrepareLayer(first + face));
         ostate->vtkglClearDepth(1.0);
         ostate->vtkglClear(GL_DEPTH_BUFFER_BIT);
@@ -225,12 +225,12 @@ void ShadowMaps::Run(const Frame& frame)
         }
         vtkNew<vtkMatrix4x4> clipFromGrid;
         vtkMatrix4x4::Multiply4x4(clipFromWorld, worldFromGrid, clipFromGrid);
-        float* matrix = this->Data.Matrices + 16 * (first + face);
+        glsl::mat4& matrix = this->Data.shadowMatrices[first + face];
         for (int r = 0; r < 4; ++r)
         {
           for (int c = 0; c < 4; ++c)
           {
-            matrix[4 * c + r] = static_cast<float>(clipFromGrid->GetElement(r, c));
+            matrix[c][r] = static_cast<float>(clipFromGrid->GetElement(r, c));
           }
         }
       }

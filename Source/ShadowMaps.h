@@ -2,7 +2,7 @@
  * ShadowMaps stage (shadow_maps.glsl reads them): a depth map per directional or spot light
  * and six (a cube) per point light, rendered from the light by VTK's own mappers (the actors
  * that are voxelized), and the matrices from grid coordinates to each map's clip space, in
- * the std140 layout of the `VoxelShadowBlock` uniform block. The voxel lighting and the
+ * the `VoxelShadowBlock` uniform block (Shaders/shadow_block.h). The voxel lighting and the
  * pixels' shadows (ConeTrace) look them up. Headlights have none: their shadows are hidden
  * behind what casts them.
  */
@@ -13,7 +13,9 @@
 #include "MapperCopies.h"
 #include "ViewRenderer.h" // for ViewRenderer
 #include "shader_interface.h"
+#include "shadow_block.h"
 
+#include <cstddef>
 #include <string>
 
 class vtkLight;
@@ -51,14 +53,14 @@ public:
   }
 
 private:
-  /// std140 layout of shadow_maps.glsl's VoxelShadowBlock.
-  struct Block
-  {
-    float Matrices[16 * MaxLayers]; // column-major grid -> clip, per layer
-    int Lights[4 * MaxLights];      // first layer (-1: none), layers, valid for the pixels
-    float Texels[4 * MaxLights];    // a texel's width in voxels: x + y * distance
-    int Info[4];                    // every shadow-casting light has maps for the pixels
-  };
+  /// shadow_block.h's VoxelShadowBlock, the one declaration C++ and GLSL share.
+  using Block = glsl::VoxelShadowBlock;
+  // std140: mat4 64 bytes, ivec4 and vec4 16, arrays of them without gaps
+  static_assert(offsetof(Block, shadowLights) == 64 * MaxLayers &&
+      offsetof(Block, shadowTexels) == 64 * MaxLayers + 16 * MaxLights &&
+      offsetof(Block, shadowInfo) == 64 * MaxLayers + 32 * MaxLights &&
+      sizeof(Block) == 64 * MaxLayers + 32 * MaxLights + 16,
+    "not std140");
 
   ViewRenderer View; // draws through each light's camera
   MapperCopies Copies; // depth-only draws never switch the user's mappers

@@ -8,11 +8,11 @@ namespace voxelgi
 
 void VoxelGridBlock::Bind(const VoxelGrid& grid)
 {
-  Block block;
-  block.Resolution = grid.Resolution;
-  block.VoxelSize = static_cast<float>(grid.VoxelSize);
-  if (!this->Buffer.IsAllocated() || block.Resolution != this->Uploaded.Resolution ||
-    block.VoxelSize != this->Uploaded.VoxelSize)
+  Block block{};
+  block.voxelResolution = grid.Resolution;
+  block.voxelSize = static_cast<float>(grid.VoxelSize);
+  if (!this->Buffer.IsAllocated() || block.voxelResolution != this->Uploaded.voxelResolution ||
+    block.voxelSize != this->Uploaded.voxelSize)
   {
     if (!this->Buffer.IsAllocated())
     {

@@ -1,11 +1,15 @@
 /**
- * The voxel grid's uniform buffer (Shaders/voxel_grid.glsl): resolution and voxel size, the
- * one copy every stage's shaders read, bound at VOXELGI_GRID_BLOCK_BINDING.
+ * The voxel grid's uniform buffer (Shaders/voxel_grid_block.h, the one declaration C++ and
+ * GLSL share): resolution and voxel size, the one copy every stage's shaders read, bound at
+ * VOXELGI_GRID_BLOCK_BINDING.
  */
 #ifndef VoxelGIVoxelGridBlock_h
 #define VoxelGIVoxelGridBlock_h
 
 #include "GLHelpers.h"
+#include "voxel_grid_block.h"
+
+#include <cstddef>
 
 class vtkWindow;
 
@@ -21,14 +25,10 @@ public:
   void ReleaseGraphicsResources(vtkWindow* window);
 
 private:
-  // std140 layout of VoxelGridBlock
-  struct Block
-  {
-    int Resolution = 0;
-    float VoxelSize = 0.f;
-    float Padding[2] = { 0.f, 0.f };
-  };
-  Block Uploaded;
+  using Block = glsl::VoxelGridBlock;
+  // std140: each scalar on its own 4-byte alignment, the block rounded up to 16 bytes
+  static_assert(offsetof(Block, voxelSize) == 4 && sizeof(Block) == 16, "not std140");
+  Block Uploaded{};
   StorageBuffer Buffer;
 };
 
