@@ -73,7 +73,6 @@ endforeach ()
 set(exposed_groups "${exposed_information}          <Property name=\"GIActive\" />
           <Property name=\"RankTrafficBytes\" />
           <Property name=\"RankTrafficMilliseconds\" />
-          <Property name=\"VoxelAlbedoChecksum\" />
           <Property name=\"Invalidate\" />\n")
 foreach (group IN LISTS groups_order)
   if (NOT exposed_${group} STREQUAL "")
@@ -92,7 +91,6 @@ set(content "<!-- Generated from Source/VoxelGISettings.json by Plugin/GenerateV
 ${properties}      <IntVectorProperty name=\"GIActive\" command=\"GetGIActive\" information_only=\"1\" />
       <DoubleVectorProperty name=\"RankTrafficBytes\" command=\"GetRankTrafficBytes\" information_only=\"1\" />
       <DoubleVectorProperty name=\"RankTrafficMilliseconds\" command=\"GetRankTrafficMilliseconds\" information_only=\"1\" />
-      <IntVectorProperty name=\"VoxelAlbedoChecksum\" command=\"GetVoxelAlbedoChecksum\" information_only=\"1\" />
       <Property name=\"Invalidate\" command=\"Invalidate\" panel_visibility=\"never\" />
     </Proxy>
   </ProxyGroup>

@@ -215,13 +215,6 @@ public:
   double GetRankTrafficBytes() const;
   double GetRankTrafficMilliseconds() const;
 
-  /**
-   * A fingerprint of the voxel albedo volume (31 bits of its FNV-1a hash; 0 when there is
-   * none), to compare the voxels of several processes or runs: the ranks of a distributed
-   * render hold the same merged voxels. Reads the volume back (makes the window current).
-   */
-  int GetVoxelAlbedoChecksum();
-
   enum Resources
   {
     RESOURCE_VOXELIZATION = 0, ///< accumulators, flags, albedo and normal volumes

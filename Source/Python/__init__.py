@@ -4,8 +4,9 @@
     gi = vtkVoxelGIPass()
     renderer.SetPass(gi)
 
-vtkVoxelGIScenes (the built-in scenes of the tests and examples) comes from the helper module
-vtkTestingVoxelGI, which the render pass does not need.
+vtkVoxelGIScenes (the built-in scenes of the tests and examples) and vtkVoxelGIEGLRenderWindow
+(a headless window through EGL) come from the helper module vtkTestingVoxelGI, which the render
+pass does not need.
 """
 # VTK's OpenGL backend must be loaded before the pass is created.
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401

@@ -25,12 +25,10 @@ int TestGIDisabled(int argc, char* argv[])
 
   vtkNew<vtkRenderer> renderer;
   vtkVoxelGIScenes::AddCornellBox(renderer);
-  vtkNew<vtkRenderWindow> window;
-  window->SetSize(300, 300);
-  window->AddRenderer(renderer);
-  vtkNew<vtkVoxelGIPass> gi;
+  voxelgi_test::GIWindow view(renderer, 0, 300); // the pass's default voxels
+  vtkRenderWindow* window = view.Window;
+  vtkVoxelGIPass* gi = view.GI;
   gi->EnabledOff();
-  renderer->SetPass(gi);
   window->Render();
   VOXELGI_CHECK(!gi->GetGIActive(), "GI ran although disabled");
   VOXELGI_CHECK(gi->GetVoxelMemoryBytes() == 0, "disabled GI allocated voxel memory");

@@ -43,12 +43,9 @@ int LitPlaneAlone()
   sun->SetPosition(0.5, 2.0, 1.0);
   sun->SetFocalPoint(0.0, 0.0, 0.0);
   renderer->AddLight(sun);
-  vtkNew<vtkRenderWindow> window;
-  window->SetSize(100, 100);
-  window->AddRenderer(renderer);
-  vtkNew<vtkVoxelGIPass> gi;
-  gi->SetVoxelResolution(64);
-  renderer->SetPass(gi);
+  voxelgi_test::GIWindow view(renderer, 64, 100);
+  vtkRenderWindow* window = view.Window;
+  vtkVoxelGIPass* gi = view.GI;
   renderer->GetActiveCamera()->SetPosition(0.0, 5.0, 0.0);
   renderer->GetActiveCamera()->SetViewUp(0.0, 0.0, -1.0);
   renderer->GetActiveCamera()->SetFocalPoint(0.0, 0.0, 0.0);
@@ -83,12 +80,9 @@ int Furnace()
   {
     vtkVoxelGIPass::SetPropEmission(wall, emission, emission, emission);
   }
-  vtkNew<vtkRenderWindow> window;
-  window->SetSize(64, 64);
-  window->AddRenderer(renderer);
-  vtkNew<vtkVoxelGIPass> gi;
-  gi->SetVoxelResolution(32);
-  renderer->SetPass(gi);
+  voxelgi_test::GIWindow view(renderer, 32, 64);
+  vtkRenderWindow* window = view.Window;
+  vtkVoxelGIPass* gi = view.GI;
   renderer->GetActiveCamera()->SetPosition(2.0, 2.0, 3.5);
   renderer->GetActiveCamera()->SetFocalPoint(2.0, 2.0, 0.0);
   renderer->ResetCameraClippingRange();
@@ -150,13 +144,10 @@ int DirectLightOnPlane()
   lamp->SetAttenuationValues(1.0, 0.0, 0.1);
   lamp->SetIntensity(1.5);
   renderer->AddLight(lamp);
-  vtkNew<vtkRenderWindow> window;
-  window->SetSize(64, 64);
-  window->AddRenderer(renderer);
-  vtkNew<vtkVoxelGIPass> gi;
-  gi->SetVoxelResolution(64);
+  voxelgi_test::GIWindow view(renderer, 64, 64);
+  vtkRenderWindow* window = view.Window;
+  vtkVoxelGIPass* gi = view.GI;
   gi->SetBounces(0);
-  renderer->SetPass(gi);
   renderer->ResetCamera();
   window->Render();
   VOXELGI_CHECK(gi->GetGIActive(), "GI did not run");
@@ -206,13 +197,10 @@ int ShadowedFloor()
   sun->SetPosition(0.0, 5.0, 0.0);
   sun->SetFocalPoint(0.0, 0.0, 0.0);
   renderer->AddLight(sun);
-  vtkNew<vtkRenderWindow> window;
-  window->SetSize(64, 64);
-  window->AddRenderer(renderer);
-  vtkNew<vtkVoxelGIPass> gi;
-  gi->SetVoxelResolution(64);
+  voxelgi_test::GIWindow view(renderer, 64, 64);
+  vtkRenderWindow* window = view.Window;
+  vtkVoxelGIPass* gi = view.GI;
   gi->SetBounces(0);
-  renderer->SetPass(gi);
   renderer->ResetCamera();
   for (int mode : { vtkVoxelGIPass::LIGHT_OCCLUSION_VOXEL_SHADOWS,
          vtkVoxelGIPass::LIGHT_OCCLUSION_SHADOW_MAPS })

@@ -183,22 +183,15 @@ double FloorFormFactor(const dvec3& p, const dvec3& n, double x0, double x1, dou
   return sum;
 }
 
-struct View
+struct View : voxelgi_test::GIWindow
 {
-  vtkNew<vtkRenderer> Renderer;
-  vtkNew<vtkRenderWindow> Window;
-  vtkNew<vtkVoxelGIPass> GI;
   int Size = 0;
 
+  // Pixels are compared with closed forms one by one: no multisampled blends at edges.
   View(int size, int resolution)
-    : Size(size)
+    : GIWindow(nullptr, resolution, size, 0)
+    , Size(size)
   {
-    this->Window->SetSize(size, size);
-    // Pixels are compared with closed forms one by one: no multisampled blends at edges.
-    this->Window->SetMultiSamples(0);
-    this->Window->AddRenderer(this->Renderer);
-    this->GI->SetVoxelResolution(resolution);
-    this->Renderer->SetPass(this->GI);
   }
   void Aim(const dvec3& position, const dvec3& focal, double viewAngle = 30.0)
   {

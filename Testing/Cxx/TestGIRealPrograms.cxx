@@ -205,10 +205,9 @@ int Headlight(int argc, char* argv[])
 {
   vtkNew<vtkRenderer> renderer;
   voxelgi_test::AddSphereAndBlockOnFloor(renderer);
-  voxelgi_test::GIWindow view(renderer);
+  voxelgi_test::GIWindow view(renderer, 64, 200, 0);
   vtkRenderWindow* window = view.Window;
   vtkVoxelGIPass* gi = view.GI;
-  window->SetMultiSamples(0);
   vtkCamera* camera = renderer->GetActiveCamera();
 
   // 30 frames of 2 degrees; returns the mean frame time and counts the relit frames.

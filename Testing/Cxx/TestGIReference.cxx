@@ -103,16 +103,15 @@ int TestGIReference(int argc, char* argv[])
 
   vtkNew<vtkRenderer> renderer;
   VOXELGI_CHECK(vtkVoxelGIScenes::AddScene(renderer, scene.c_str()), "no scene " << scene);
-  vtkNew<vtkRenderWindow> window;
-  window->SetSize(w, h);
-  window->AddRenderer(renderer);
-  window->Render();
+  voxelgi_test::GIWindow view(renderer, 0); // the pass's defaults
+  vtkRenderWindow* window = view.Window;
+  vtkVoxelGIPass* gi = view.GI;
+  window->SetSize(w, h); // the reference's
+  view.RenderWithoutGI();
   vtkNew<vtkFloatArray> plainPixels;
   window->GetRGBAPixelData(0, 0, w - 1, h - 1, 0, plainPixels);
   const Score plain = Measure(plainPixels, reference, "plain VTK");
 
-  vtkNew<vtkVoxelGIPass> gi;
-  renderer->SetPass(gi);
   window->Render();
   VOXELGI_CHECK(gi->GetGIActive(), "GI did not run");
   VOXELGI_CHECK(voxelgi_test::AllFinite(gi), "non-finite values");

@@ -87,12 +87,9 @@ double RandomValue(int i, std::mt19937& random)
 int TestGISoak(int, char*[])
 {
   vtkNew<vtkRenderer> renderer;
-  vtkNew<vtkRenderWindow> window;
-  window->SetSize(64, 64);
-  window->AddRenderer(renderer);
-  vtkNew<vtkVoxelGIPass> gi;
-  gi->SetVoxelResolution(32);
-  renderer->SetPass(gi);
+  voxelgi_test::GIWindow view(renderer, 32, 64);
+  vtkRenderWindow* window = view.Window;
+  vtkVoxelGIPass* gi = view.GI;
   vtkVoxelGIScenes::AddCornellBox(renderer);
   vtkNew<vtkLight> light;
   light->SetLightTypeToSceneLight();

@@ -35,13 +35,10 @@ int TestGISpotLight(int argc, char* argv[])
   spot->SetExponent(2.0);
   renderer->AddLight(spot);
 
-  vtkNew<vtkRenderWindow> window;
-  window->SetSize(200, 200);
-  window->AddRenderer(renderer);
-  vtkNew<vtkVoxelGIPass> gi;
-  gi->SetVoxelResolution(64);
+  voxelgi_test::GIWindow view(renderer);
+  vtkRenderWindow* window = view.Window;
+  vtkVoxelGIPass* gi = view.GI;
   gi->SetBounces(0);
-  renderer->SetPass(gi);
   vtkCamera* camera = renderer->GetActiveCamera();
   camera->SetPosition(0.0, 4.0, 6.0);
   camera->SetFocalPoint(0.0, 0.0, 0.0);

@@ -28,26 +28,19 @@
 
 namespace
 {
-struct View
+struct View : voxelgi_test::GIWindow
 {
-  vtkNew<vtkRenderer> Renderer;
-  vtkNew<vtkRenderWindow> Window;
-  vtkNew<vtkVoxelGIPass> GI;
   vtkActor* Box = nullptr;
 
   explicit View(bool reuse)
+    : GIWindow(nullptr, 32, 200, 0)
   {
     vtkVoxelGIScenes::AddCornellBox(this->Renderer);
     vtkNew<vtkCubeSource> box;
     box->SetBounds(3.4, 4.2, 0.0, 0.8, 3.6, 4.4);
     this->Box = vtkVoxelGIScenes::AddSource(this->Renderer, box, 0.9, 0.7, 0.2);
-    this->Window->SetSize(200, 200);
-    this->Window->SetMultiSamples(0);
-    this->Window->AddRenderer(this->Renderer);
-    this->GI->SetVoxelResolution(32);
     this->GI->SetTemporalReuse(reuse);
     this->GI->SetUpdatePolicyToOnDemand();
-    this->Renderer->SetPass(this->GI);
   }
 
   void Step(int frame, bool moveCamera)

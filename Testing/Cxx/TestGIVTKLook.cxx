@@ -118,22 +118,18 @@ int TestGIVTKLook(int argc, char* argv[])
   renderer->GetActiveCamera()->SetFocalPoint(0.0, 0.4, 0.0);
   renderer->ResetCameraClippingRange();
 
-  vtkNew<vtkRenderWindow> window;
-  window->SetSize(200, 200);
-  window->SetMultiSamples(which == "msaa" ? 8 : 0);
+  voxelgi_test::GIWindow view(renderer, 32, 200, which == "msaa" ? 8 : 0);
+  vtkRenderWindow* window = view.Window;
+  vtkVoxelGIPass* gi = view.GI;
   window->SetAlphaBitPlanes(1);
-  window->AddRenderer(renderer);
-  window->Render();
+  view.RenderWithoutGI();
   vtkNew<vtkUnsignedCharArray> plain;
   window->GetRGBACharPixelData(0, 0, 199, 199, 0, plain);
 
-  vtkNew<vtkVoxelGIPass> gi;
-  gi->SetVoxelResolution(32);
   gi->SetIndirectIntensity(0.0);
   gi->SetAmbientOcclusionStrength(0.0);
   gi->SetConeShadows(false);
   gi->SetSpecularCone(false);
-  renderer->SetPass(gi);
   if (which == "msaa")
   {
     // With one G-buffer sample the window's anti-aliased line would be aliased: said once.

@@ -50,20 +50,17 @@ namespace
 // The pass's composite of `renderer` at 64^3 voxels, 200 x 200 pixels, or VTK's own image.
 vtkSmartPointer<vtkFloatArray> Image(vtkRenderer* renderer, bool withGI)
 {
-  vtkNew<vtkRenderWindow> window;
-  window->SetSize(200, 200);
-  window->SetMultiSamples(0);
-  window->AddRenderer(renderer);
+  voxelgi_test::GIWindow view(renderer, 64, 200, 0);
+  vtkRenderWindow* window = view.Window;
+  vtkVoxelGIPass* gi = view.GI;
   auto pixels = vtkSmartPointer<vtkFloatArray>::New();
   if (!withGI)
   {
+    renderer->SetPass(nullptr); // VTK's own image (the renderer outlives this window)
     window->Render();
     window->GetRGBAPixelData(0, 0, 199, 199, 0, pixels);
     return pixels;
   }
-  vtkNew<vtkVoxelGIPass> gi;
-  gi->SetVoxelResolution(64);
-  renderer->SetPass(gi);
   window->Render();
   if (!gi->GetFloatImage(vtkVoxelGIPass::IMAGE_COMPOSITE, pixels))
   {

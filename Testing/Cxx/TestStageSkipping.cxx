@@ -177,14 +177,11 @@ int TestStageSkipping(int, char*[])
   legend->SetEntry(0, sphere->GetOutput(), "sphere", red);
   renderer->AddActor2D(legend);
 
-  vtkNew<vtkRenderWindow> window;
-  window->SetSize(100, 100);
-  window->AddRenderer(renderer);
-  vtkNew<vtkVoxelGIPass> gi;
-  gi->SetVoxelResolution(32);
+  voxelgi_test::GIWindow view(renderer, 32, 100);
+  vtkRenderWindow* window = view.Window;
+  vtkVoxelGIPass* gi = view.GI;
   // Skipping must be exact; temporal reuse is not (TestGITemporalReuse bounds it).
   gi->TemporalReuseOff();
-  renderer->SetPass(gi);
   renderer->ResetCameraClippingRange();
 
   window->Render();

@@ -79,18 +79,12 @@ struct Messages
 };
 
 // A scene: renderer, window, pass and message capture.
-struct Scene
+struct Scene : voxelgi_test::GIWindow
 {
-  vtkNew<vtkRenderer> Renderer;
-  vtkNew<vtkRenderWindow> Window;
-  vtkNew<vtkVoxelGIPass> GI;
   Messages Log{ GI };
   Scene()
+    : GIWindow(nullptr, 32, 80)
   {
-    this->Window->SetSize(80, 80);
-    this->Window->AddRenderer(this->Renderer);
-    this->GI->SetVoxelResolution(32);
-    this->Renderer->SetPass(this->GI);
   }
   void Render()
   {

@@ -12,14 +12,10 @@ int TestVoxelAlbedoCornell(int argc, char* argv[])
 {
   vtkNew<vtkRenderer> renderer;
   vtkVoxelGIScenes::AddCornellBox(renderer);
-  vtkNew<vtkRenderWindow> window;
-  window->SetSize(300, 300);
-  window->AddRenderer(renderer);
-
-  vtkNew<vtkVoxelGIPass> gi;
-  gi->SetVoxelResolution(64);
+  voxelgi_test::GIWindow view(renderer, 64, 300);
+  vtkRenderWindow* window = view.Window;
+  vtkVoxelGIPass* gi = view.GI;
   gi->SetDebugViewToVoxelAlbedo();
-  renderer->SetPass(gi);
   window->Render();
   if (!gi->GetGIActive())
   {

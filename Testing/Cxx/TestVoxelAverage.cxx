@@ -75,13 +75,10 @@ int TestVoxelAverage(int, char*[])
 
   vtkNew<vtkRenderer> renderer;
   renderer->AddActor(actor);
-  vtkNew<vtkRenderWindow> window;
-  window->SetSize(64, 64);
-  window->AddRenderer(renderer);
-  vtkNew<vtkVoxelGIPass> gi;
-  gi->SetVoxelResolution(res);
+  voxelgi_test::GIWindow view(renderer, res, 64);
+  vtkRenderWindow* window = view.Window;
+  vtkVoxelGIPass* gi = view.GI;
   gi->SetGridPadding(0.05);
-  renderer->SetPass(gi);
   renderer->ResetCamera();
   window->Render();
   VOXELGI_CHECK(gi->GetGIActive(), "GI did not run");

@@ -101,13 +101,10 @@ int TestVoxelConservative(int, char*[])
 
   vtkNew<vtkRenderer> renderer;
   renderer->AddActor(actor);
-  vtkNew<vtkRenderWindow> window;
-  window->SetSize(64, 64);
-  window->AddRenderer(renderer);
-  vtkNew<vtkVoxelGIPass> gi;
-  gi->SetVoxelResolution(res);
+  voxelgi_test::GIWindow view(renderer, res, 64);
+  vtkRenderWindow* window = view.Window;
+  vtkVoxelGIPass* gi = view.GI;
   gi->SetGridPadding(padding);
-  renderer->SetPass(gi);
   renderer->ResetCamera();
   // Both paths when the GPU rasterizes conservatively itself; the software one always.
   for (const bool hardware : { true, false })

@@ -22,18 +22,7 @@
 
 namespace
 {
-std::string StagesRun(vtkVoxelGIPass* gi)
-{
-  std::string ran;
-  for (int s = 0; s < vtkVoxelGIPass::NUMBER_OF_STAGES; ++s)
-  {
-    if (gi->GetStageRan(s))
-    {
-      ran += std::string(ran.empty() ? "" : ",") + vtkVoxelGIPass::GetStageName(s);
-    }
-  }
-  return ran;
-}
+using voxelgi_test::StagesRan;
 
 // Value (first component) of a volume at the voxel containing world point p.
 double At(vtkVoxelGIPass* gi, vtkImageData* image, double x, double y, double z)
@@ -84,27 +73,24 @@ int TestVoxelDynamic(int, char*[])
   renderer->AddActor(floor);
   renderer->AddActor(cube);
   renderer->AddActor(post);
-  vtkNew<vtkRenderWindow> window;
-  window->SetSize(64, 64);
-  window->AddRenderer(renderer);
-  vtkNew<vtkVoxelGIPass> gi;
-  gi->SetVoxelResolution(32);
-  renderer->SetPass(gi);
+  voxelgi_test::GIWindow view(renderer, 32, 64);
+  vtkRenderWindow* window = view.Window;
+  vtkVoxelGIPass* gi = view.GI;
   renderer->ResetCamera();
 
   window->Render();
   VOXELGI_CHECK(gi->GetGIActive(), "GI did not run");
-  VOXELGI_CHECK(StagesRun(gi) == "Scan,Clear,VoxelizeStatic,VoxelizeDynamic,Resolve" + Relight,
-    "first frame ran " << StagesRun(gi));
+  VOXELGI_CHECK(StagesRan(gi) == "Scan,Clear,VoxelizeStatic,VoxelizeDynamic,Resolve" + Relight,
+    "first frame ran " << StagesRan(gi));
 
   window->Render();
-  VOXELGI_CHECK(StagesRun(gi) == Unchanged, "unchanged frame ran " << StagesRun(gi));
+  VOXELGI_CHECK(StagesRan(gi) == Unchanged, "unchanged frame ran " << StagesRan(gi));
 
   // Move the dynamic cube 2 units along +x (grid covers the floor, so no refit).
   cube->SetPosition(2.0, 0.0, 0.0);
   window->Render();
-  VOXELGI_CHECK(StagesRun(gi) == "Scan,Clear,VoxelizeDynamic,Resolve" + Relight,
-    "dynamic move ran " << StagesRun(gi));
+  VOXELGI_CHECK(StagesRan(gi) == "Scan,Clear,VoxelizeDynamic,Resolve" + Relight,
+    "dynamic move ran " << StagesRan(gi));
 
   vtkNew<vtkImageData> counts;
   vtkNew<vtkImageData> flags;
@@ -127,8 +113,8 @@ int TestVoxelDynamic(int, char*[])
   // A static actor moves: full revoxelization; AutoDynamic makes it dynamic from now on.
   post->SetPosition(-2.0, 0.0, 0.0);
   window->Render();
-  VOXELGI_CHECK(StagesRun(gi) == "Scan,Clear,VoxelizeStatic,VoxelizeDynamic,Resolve" + Relight,
-    "static move ran " << StagesRun(gi));
+  VOXELGI_CHECK(StagesRan(gi) == "Scan,Clear,VoxelizeStatic,VoxelizeDynamic,Resolve" + Relight,
+    "static move ran " << StagesRan(gi));
   VOXELGI_CHECK(gi->GetVoxelVolume(vtkVoxelGIPass::VOLUME_COUNT, counts), "no counts");
   VOXELGI_CHECK(At(gi, counts, 3.25, 3.25, 2.0) == 0, "old post position still voxelized");
   VOXELGI_CHECK(At(gi, counts, 1.25, 3.25, 2.0) > 0, "moved post not voxelized");
@@ -136,7 +122,7 @@ int TestVoxelDynamic(int, char*[])
   VOXELGI_CHECK(At(gi, radiance, 3.25, 3.25, 2.0) == 0.0, "old post position still lit");
   post->SetPosition(-2.0, -1.0, 0.0);
   window->Render();
-  VOXELGI_CHECK(StagesRun(gi) == "Scan,Clear,VoxelizeDynamic,Resolve" + Relight,
-    "second move of the auto-dynamic post ran " << StagesRun(gi));
+  VOXELGI_CHECK(StagesRan(gi) == "Scan,Clear,VoxelizeDynamic,Resolve" + Relight,
+    "second move of the auto-dynamic post ran " << StagesRan(gi));
   return EXIT_SUCCESS;
 }

@@ -60,12 +60,9 @@ int TestVoxelGlyphs(int, char*[])
   light->SetPosition(2.0, 0.0, 5.0);
   light->SetFocalPoint(2.0, 0.0, 0.0);
   renderer->AddLight(light);
-  vtkNew<vtkRenderWindow> window;
-  window->SetSize(64, 64);
-  window->AddRenderer(renderer);
-  vtkNew<vtkVoxelGIPass> gi;
-  gi->SetVoxelResolution(32);
-  renderer->SetPass(gi);
+  voxelgi_test::GIWindow view(renderer, 32, 64);
+  vtkRenderWindow* window = view.Window;
+  vtkVoxelGIPass* gi = view.GI;
   renderer->ResetCamera();
   window->Render();
   VOXELGI_CHECK(gi->GetGIActive(), "GI did not run");

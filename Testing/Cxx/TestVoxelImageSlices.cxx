@@ -93,14 +93,11 @@ int TestVoxelImageSlices(int, char*[])
   light->SetPosition(3.0, 3.0, 5.0);
   light->SetFocalPoint(1.0, 1.0, 1.0);
   renderer->AddLight(light);
-  vtkNew<vtkRenderWindow> window;
-  window->SetSize(64, 64);
-  window->AddRenderer(renderer);
-  vtkNew<vtkVoxelGIPass> gi;
-  gi->SetVoxelResolution(64);
+  voxelgi_test::GIWindow view(renderer, 64, 64);
+  vtkRenderWindow* window = view.Window;
+  vtkVoxelGIPass* gi = view.GI;
   vtkNew<WarningText> warnings;
   gi->AddObserver(vtkCommand::WarningEvent, warnings);
-  renderer->SetPass(gi);
   renderer->ResetCamera();
   window->Render();
   VOXELGI_CHECK(gi->GetGIActive(), "GI did not run");

@@ -43,13 +43,10 @@ int TestVoxelScalarColors(int argc, char* argv[])
   vtkNew<vtkRenderer> renderer;
   renderer->AddActor(actor);
   renderer->SetBackground(0.1, 0.1, 0.1);
-  vtkNew<vtkRenderWindow> window;
-  window->SetSize(300, 300);
-  window->AddRenderer(renderer);
-  vtkNew<vtkVoxelGIPass> gi;
-  gi->SetVoxelResolution(32);
+  voxelgi_test::GIWindow view(renderer, 32, 300);
+  vtkRenderWindow* window = view.Window;
+  vtkVoxelGIPass* gi = view.GI;
   gi->SetDebugViewToVoxelAlbedo();
-  renderer->SetPass(gi);
   renderer->ResetCamera();
   renderer->GetActiveCamera()->Elevation(20);
   window->Render();

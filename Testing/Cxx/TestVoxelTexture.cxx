@@ -52,13 +52,10 @@ int TestVoxelTexture(int argc, char* argv[])
   vtkNew<vtkRenderer> renderer;
   renderer->AddActor(actor);
   renderer->SetBackground(0.1, 0.1, 0.1);
-  vtkNew<vtkRenderWindow> window;
-  window->SetSize(300, 300);
-  window->AddRenderer(renderer);
-  vtkNew<vtkVoxelGIPass> gi;
-  gi->SetVoxelResolution(32);
+  voxelgi_test::GIWindow view(renderer, 32, 300);
+  vtkRenderWindow* window = view.Window;
+  vtkVoxelGIPass* gi = view.GI;
   gi->SetDebugViewToVoxelAlbedo();
-  renderer->SetPass(gi);
   renderer->ResetCamera();
   window->Render();
   VOXELGI_CHECK(gi->GetGIActive(), "GI did not run");

@@ -264,12 +264,31 @@ std::string StagesRan(vtkVoxelGIPass* gi)
   return ran;
 }
 
-GIWindow::GIWindow(vtkRenderer* renderer, int resolution)
+GIWindow::GIWindow(vtkRenderer* renderer, int resolution, int size, int samples)
+  : Renderer(renderer)
 {
-  this->Window->SetSize(200, 200);
-  this->Window->AddRenderer(renderer);
-  this->GI->SetVoxelResolution(resolution);
-  renderer->SetPass(this->GI);
+  if (!this->Renderer)
+  {
+    this->Renderer = vtkSmartPointer<vtkRenderer>::New();
+  }
+  this->Window->SetSize(size, size);
+  if (samples >= 0)
+  {
+    this->Window->SetMultiSamples(samples);
+  }
+  this->Window->AddRenderer(this->Renderer);
+  if (resolution > 0)
+  {
+    this->GI->SetVoxelResolution(resolution);
+  }
+  this->Renderer->SetPass(this->GI);
+}
+
+void GIWindow::RenderWithoutGI()
+{
+  this->Renderer->SetPass(nullptr);
+  this->Window->Render();
+  this->Renderer->SetPass(this->GI);
 }
 
 void AddSphereAndBlockOnFloor(vtkRenderer* renderer)

@@ -4,6 +4,8 @@
 
 #include "vtkNew.h"          // for vtkNew
 #include "vtkRenderWindow.h" // for vtkNew
+#include "vtkRenderer.h"     // for vtkSmartPointer
+#include "vtkSmartPointer.h" // for vtkSmartPointer
 #include "vtkVoxelGIPass.h"  // for vtkNew
 
 #include <glm/glm.hpp>
@@ -15,7 +17,6 @@
 class vtkActor;
 class vtkAlgorithm;
 class vtkFloatArray;
-class vtkRenderer;
 
 namespace voxelgi_test
 {
@@ -55,13 +56,19 @@ double MeanOver(vtkFloatArray* image, int w, int x0, int y0, int x1, int y1, int
 /// that everything stays finite and compares with the test's baseline image.
 int CornellRegressionTest(int argc, char* argv[], int debugView);
 
-/// The image tests' window (200 x 200) showing `renderer` through a pass of
-/// `resolution`^3 voxels.
+/// The tests' window showing `renderer` (or, given none, a renderer of its own) through a
+/// pass of `resolution`^3 voxels (0: the pass's default): `size` x `size` pixels (200, the
+/// image tests' size, by default), `samples` multisamples (negative: VTK's default).
 struct GIWindow
 {
+  vtkSmartPointer<vtkRenderer> Renderer;
   vtkNew<vtkRenderWindow> Window;
   vtkNew<vtkVoxelGIPass> GI;
-  explicit GIWindow(vtkRenderer* renderer, int resolution = 64);
+  explicit GIWindow(vtkRenderer* renderer, int resolution = 64, int size = 200, int samples = -1);
+
+  /// Renders VTK's own image of the renderer in this window: the pass is set aside for the
+  /// frame.
+  void RenderWithoutGI();
 };
 
 /// Add an orange sphere and a blue block standing on a grey floor 6 units wide.

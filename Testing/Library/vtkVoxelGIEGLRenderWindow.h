@@ -23,11 +23,11 @@
 #define vtkVoxelGIEGLRenderWindow_h
 
 #include "vtkGenericOpenGLRenderWindow.h"
-#include "vtkRenderingVoxelGIModule.h" // for export macro
+#include "vtkTestingVoxelGIModule.h" // for export macro
 
 #include <memory> // for std::unique_ptr
 
-class VTKRENDERINGVOXELGI_EXPORT vtkVoxelGIEGLRenderWindow : public vtkGenericOpenGLRenderWindow
+class VTKTESTINGVOXELGI_EXPORT vtkVoxelGIEGLRenderWindow : public vtkGenericOpenGLRenderWindow
 {
 public:
   static vtkVoxelGIEGLRenderWindow* New();
