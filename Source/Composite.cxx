@@ -5,7 +5,7 @@
 #include "GBufferPass.h"
 #include "GridView.h"
 #include "VoxelGIShaders.h"
-#include "vtkVoxelGIPass.h"
+#include "StageIds.h"
 
 #include "vtkOpenGLRenderWindow.h"
 #include "vtk_glew.h"
@@ -37,7 +37,7 @@ bool Composite::Prepare(const Frame& frame, std::string& error)
 
 void Composite::Run(const Frame& frame)
 {
-  ScopedStage stage(*frame.Clock, vtkVoxelGIPass::STAGE_COMPOSITE);
+  ScopedStage stage(*frame.Clock, stage::Composite);
   vtkTextureObject* indirect = this->Trace.GetIndirect();
   vtkTextureObject* shadowed = this->Trace.GetShadowed();
   ComputeProgram& p = this->Program;
@@ -65,7 +65,7 @@ void Composite::Run(const Frame& frame)
   p.SetFloat("aoStrength", static_cast<float>(frame.Config.AmbientOcclusionStrength));
   const int view = frame.Config.DebugView;
   p.SetInt("compositeView",
-    view >= vtkVoxelGIPass::DEBUG_VIEW_DIRECT ? view - vtkVoxelGIPass::DEBUG_VIEW_DIRECT + 1 : 0);
+    view >= DEBUG_VIEW_DIRECT ? view - DEBUG_VIEW_DIRECT + 1 : 0);
   BindImage2D(0, this->Color, GL_WRITE_ONLY, GL_RGBA32F);
   BindImage2D(1, this->Indirect, GL_WRITE_ONLY, GL_RGBA32F);
   BindImage2D(2, this->Display, GL_WRITE_ONLY, GL_RGBA8);

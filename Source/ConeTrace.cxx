@@ -7,7 +7,7 @@
 #include "ShadowMaps.h"
 #include "VoxelGIShaders.h"
 #include "VoxelMipmap.h"
-#include "vtkVoxelGIPass.h"
+#include "StageIds.h"
 
 #include "vtkCamera.h"
 #include "vtkMath.h"
@@ -116,7 +116,7 @@ void ConeTrace::SetHistoryUniforms(const Frame& frame, bool reuse)
 
 void ConeTrace::Run(const Frame& frame)
 {
-  ScopedStage stage(*frame.Clock, vtkVoxelGIPass::STAGE_CONE_TRACE);
+  ScopedStage stage(*frame.Clock, stage::ConeTrace);
   const bool reuse = frame.Config.TemporalReuse && frame.Plan.Trace == TraceWork::CameraOnly && this->HistoryValid;
   this->Current = 1 - this->Current;
   const TraceImages& now = this->History[this->Current];

@@ -17,7 +17,7 @@
 #ifndef VoxelGIConeTrace_h
 #define VoxelGIConeTrace_h
 
-#include "ConeTracing.h"
+#include "ConeSettings.h"
 
 #include "vtkSmartPointer.h"  // for vtkSmartPointer
 #include "vtkTextureObject.h" // for vtkSmartPointer

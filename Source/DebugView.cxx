@@ -5,7 +5,7 @@
 #include "LightVoxels.h"
 #include "VoxelGIShaders.h"
 #include "VoxelizePass.h"
-#include "vtkVoxelGIPass.h"
+#include "StageIds.h"
 
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkRenderer.h"
@@ -28,7 +28,7 @@ bool DebugView::Prepare(const Frame& frame, std::string& error)
 
 void DebugView::Run(const Frame& frame)
 {
-  ScopedStage stage(*frame.Clock, vtkVoxelGIPass::STAGE_DEBUG_VIEW);
+  ScopedStage stage(*frame.Clock, stage::DebugView);
   ComputeProgram& p = this->Program;
   p.Use(frame.Window);
   const VoxelizePass& voxels = *frame.Voxelization;

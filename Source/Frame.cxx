@@ -1,15 +1,36 @@
 #include "Frame.h"
 
-#include "vtkVoxelGIPass.h"
-
 namespace voxelgi
 {
 
-Settings Snapshot(vtkVoxelGIPass* pass, bool hasConservativeRaster)
+Settings Snapshot(vtkVoxelGIPassSettings* pass, bool hasConservativeRaster)
 {
   Settings c = SnapshotSettings(pass);
   c.HardwareConservativeRaster = c.HardwareConservativeRaster && hasConservativeRaster;
   return c;
+}
+
+bool StageClock::Ran(int stage) const
+{
+  return stage >= 0 && stage < stage::Count && this->DidRun[stage];
+}
+
+double StageClock::Milliseconds(int stage) const
+{
+  return (stage >= 0 && stage < stage::Count) ? this->Times[stage] : 0.0;
+}
+
+void StageClock::Print(ostream& os, vtkIndent indent) const
+{
+  for (int s = 0; s < stage::Count; ++s)
+  {
+    os << indent << "Stage " << stage::Name(s) << ": " << (this->DidRun[s] ? "ran" : "skipped");
+    if (this->DidRun[s] && this->Timing)
+    {
+      os << ", " << this->Times[s] << " ms";
+    }
+    os << "\n";
+  }
 }
 
 void StageClock::Reset()
@@ -43,9 +64,9 @@ void StageClock::SetCpuTime(int stage, double milliseconds)
   this->Times[stage] = milliseconds;
 }
 
-void StageClock::Resolve(int stageCount)
+void StageClock::Resolve()
 {
-  for (int stage = 0; this->Timing && stage < stageCount; ++stage)
+  for (int stage = 0; this->Timing && stage < stage::Count; ++stage)
   {
     if (this->Timers[stage].IsAllocated())
     {

@@ -12,8 +12,11 @@
 #include "FramePlan.h"
 #include "GLHelpers.h"
 #include "SceneScan.h"
+#include "StageIds.h"
 #include "SettingsSnapshot.h" // voxelgi::Settings, generated from VoxelGISettings.json
 #include "VoxelGrid.h"
+
+#include "vtkIndent.h" // for vtkIndent
 
 #include <array>
 #include <string>
@@ -22,7 +25,7 @@ class vtkOpenGLRenderWindow;
 class vtkRenderPass;
 class vtkRenderState;
 class vtkRenderer;
-class vtkVoxelGIPass;
+class vtkVoxelGIPassSettings;
 
 namespace voxelgi
 {
@@ -34,31 +37,32 @@ class VoxelMipmap;
 class VoxelizePass;
 
 /// The pass's settings now; HardwareConservativeRaster only where the context has it.
-Settings Snapshot(vtkVoxelGIPass* pass, bool hasConservativeRaster);
+Settings Snapshot(vtkVoxelGIPassSettings* pass, bool hasConservativeRaster);
 
 /// Which stages ran in a frame and, with timing on, their GPU (or, for the scan, CPU) time.
 class StageClock
 {
 public:
-  static constexpr int MaxStages = 16;
-
   void Reset();
   void Begin(int stage);
   void End(int stage);
   /// Record a CPU-measured stage.
   void SetCpuTime(int stage, double milliseconds);
   /// Collect the GPU times of the stages that ran (waits for the GPU).
-  void Resolve(int stageCount);
-  bool Ran(int stage) const { return this->DidRun[stage]; }
-  double Milliseconds(int stage) const { return this->Times[stage]; }
+  void Resolve();
+  /// Whether `stage` (StageIds.h) ran, and its time (false and 0 out of range).
+  bool Ran(int stage) const;
+  double Milliseconds(int stage) const;
+  /// Which stages ran, with their times when timing is on.
+  void Print(ostream& os, vtkIndent indent) const;
   void SetTiming(bool on) { this->Timing = on; }
   void ReleaseGraphicsResources();
 
 private:
   bool Timing = false;
-  std::array<StageTimer, MaxStages> Timers;
-  std::array<bool, MaxStages> DidRun{};
-  std::array<double, MaxStages> Times{};
+  std::array<StageTimer, stage::Count> Timers;
+  std::array<bool, stage::Count> DidRun{};
+  std::array<double, stage::Count> Times{};
 };
 
 /// Marks a stage as run and times it, for the lifetime of the object.

@@ -5,7 +5,7 @@
 #include "Ranks.h"
 #include "VoxelView.h"
 #include "VoxelizePass.h"
-#include "vtkVoxelGIPass.h"
+#include "StageIds.h"
 
 #include "vtkOpenGLRenderWindow.h"
 
@@ -37,7 +37,7 @@ bool FramePlanner::PlanVoxels(Frame& frame, bool admitted, int gbufferSamples)
   ScanMessages messages;
   const bool ok =
     this->Scan.Scan(frame.Renderer, frame.Config, this->Processes, frame.Plan.Voxels, messages);
-  frame.Clock->SetCpuTime(vtkVoxelGIPass::STAGE_SCAN, this->Scan.GetMilliseconds());
+  frame.Clock->SetCpuTime(stage::Scan, this->Scan.GetMilliseconds());
   for (const std::string& warning : messages.Warnings)
   {
     this->Notices.Report(warning, false);
@@ -86,6 +86,18 @@ bool FramePlanner::PlanLights(Frame& frame, bool emission, vtkMTimeType settings
 
 bool FramePlanner::PlanSource(Frame& frame, const VoxelView& source, vtkMTimeType settingsTime)
 {
+  const char* error = source.Shares
+    ? "its VoxelSource shares another pass's voxels itself"
+    : (source.Window && source.Window != frame.Window
+          ? "its VoxelSource renders into another window (voxels stay in their window's context)"
+          : nullptr);
+  if (error)
+  {
+    this->Notices.Error(
+      Gate::Source, std::string("Voxel GI cannot run: ") + error + ". Rendering without GI.");
+    return false;
+  }
+  this->Notices.Clear(Gate::Source);
   // The source says why when it has no GI; before its first frame there is nothing to trace.
   bool changed = false;
   if (!source.Active || !source.Window ||

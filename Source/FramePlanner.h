@@ -36,7 +36,9 @@ public:
   /// The plan from the pass's own voxels (`emission`: they have emissive voxels, or will):
   /// the lights, the radiance, the trace.
   bool PlanLights(Frame& frame, bool emission, vtkMTimeType settingsTime);
-  /// The plan from a voxel source's voxels: this renderer's lights, the trace.
+  /// The plan from a voxel source's voxels: this renderer's lights, the trace; false (said
+  /// once) where the source cannot be followed (it shares voxels itself, or renders into
+  /// another window).
   bool PlanSource(Frame& frame, const VoxelView& source, vtkMTimeType settingsTime);
 
   /// The Voxelize stage rewrote the voxels as the plan said.

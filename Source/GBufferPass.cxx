@@ -4,7 +4,7 @@
 #include "GLHelpers.h"
 #include "SceneScan.h"
 #include "VoxelGIShaders.h"
-#include "vtkVoxelGIPass.h"
+#include "StageIds.h"
 
 #include "vtkActor.h"
 #include "vtkCameraPass.h"
@@ -156,7 +156,7 @@ bool GBufferPass::Prepare(const Frame& frame, std::string&)
 //------------------------------------------------------------------------------
 void GBufferPass::Run(const Frame& frame)
 {
-  ScopedStage stage(*frame.Clock, vtkVoxelGIPass::STAGE_GBUFFER);
+  ScopedStage stage(*frame.Clock, stage::GBuffer);
   // VTK's camera, lights and opaque steps (the whole delegate if it is not a
   // vtkRenderStepsPass) into the framebuffer.
   this->Opaque = frame.Delegate;

@@ -4,7 +4,7 @@
 #   documented Set/Get block (clamped to its range; doubles refuse NaN; bools with On/Off;
 #   enumerations with their enum and Set<Name>To<Label>()), its range getters and its member,
 #   initialised to its default. A power_of_two setting's setter is only declared: it is written
-#   by hand (vtkVoxelGIPass.cxx).
+#   by hand (vtkVoxelGIPassSettings.cxx), as is PrintSelf, which prints the table.
 # - SettingsSnapshot.h/.cxx (internal): voxelgi::Settings, the settings as the stages read them,
 #   the enumerations' constants, and SnapshotSettings(pass), which fills it from a pass.
 # - vtkVoxelGISettings.cxx: vtkVoxelGISettings' table and access by name.
@@ -182,6 +182,8 @@ class VTKRENDERINGVOXELGI_EXPORT vtkVoxelGIPassSettings : public vtkOpenGLRender
 {
 public:
   vtkAbstractTypeMacro(vtkVoxelGIPassSettings, vtkOpenGLRenderPass);
+  /// Every setting of the table, so that none can be forgotten.
+  void PrintSelf(ostream& os, vtkIndent indent) override;
 
 ${blocks}
 protected:
@@ -243,7 +245,7 @@ voxelgi_write_if_changed("${OUTPUT_DIR}/SettingsSnapshot.cxx" "${content}")
 set(content "// Generated from VoxelGISettings.json by GenerateSettings.cmake. Do not edit.
 #include \"vtkVoxelGISettings.h\"
 #include \"vtkObjectFactory.h\"
-#include \"vtkVoxelGIPass.h\"
+#include \"vtkVoxelGIPassSettings.h\"
 
 #include \"VoxelGrid.h\" // for voxelgi::ClampResolution
 
@@ -321,7 +323,7 @@ int vtkVoxelGISettings::GetIndex(const char* setting)
   return -1;
 }
 
-double vtkVoxelGISettings::GetValue(vtkVoxelGIPass* pass, const char* setting)
+double vtkVoxelGISettings::GetValue(vtkVoxelGIPassSettings* pass, const char* setting)
 {
   const std::string name = setting ? setting : \"\";
   if (!pass)
@@ -337,7 +339,7 @@ double vtkVoxelGISettings::GetValue(vtkVoxelGIPass* pass, const char* setting)
 ${getters}  return 0.0;
 }
 
-bool vtkVoxelGISettings::SetValue(vtkVoxelGIPass* pass, const char* setting, double value)
+bool vtkVoxelGISettings::SetValue(vtkVoxelGIPassSettings* pass, const char* setting, double value)
 {
   const std::string name = setting ? setting : \"\";
   const int i = GetIndex(setting);

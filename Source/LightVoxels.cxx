@@ -5,7 +5,7 @@
 #include "VoxelGIShaders.h"
 #include "VoxelMipmap.h"
 #include "VoxelizePass.h"
-#include "vtkVoxelGIPass.h"
+#include "StageIds.h"
 
 #include "vtk_glew.h"
 
@@ -47,7 +47,7 @@ bool LightVoxels::Prepare(const Frame& frame, std::string& error)
     error = "could not allocate the radiance volume";
     return false;
   }
-  this->VoxelShadows = config.LightOcclusion != vtkVoxelGIPass::LIGHT_OCCLUSION_NONE;
+  this->VoxelShadows = config.LightOcclusion != LIGHT_OCCLUSION_NONE;
   // The shadow-map variant is compiled only when a scene uses it.
   this->WithShadowMaps = this->Shadows.HasMaps();
   return this->Program.BuildOnce(shaders::light_voxels_comp, "voxel lighting", error,
@@ -56,7 +56,7 @@ bool LightVoxels::Prepare(const Frame& frame, std::string& error)
 
 void LightVoxels::Run(const Frame& frame)
 {
-  ScopedStage stage(*frame.Clock, vtkVoxelGIPass::STAGE_LIGHT);
+  ScopedStage stage(*frame.Clock, stage::LightVoxels);
   const VoxelizePass& voxels = this->Voxels;
   SamplerBindings samplers(frame.Window);
   const int albedo = samplers.Add(voxels.GetAlbedo());

@@ -5,7 +5,7 @@
 #include "Frame.h"
 #include "GBufferPass.h"
 #include "VoxelGIShaders.h"
-#include "vtkVoxelGIPass.h"
+#include "StageIds.h"
 
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -43,12 +43,12 @@ void Present::Run(const Frame& frame)
   this->RenderedProps = 0;
   if (frame.Plan.VoxelView)
   {
-    ScopedStage stage(*frame.Clock, vtkVoxelGIPass::STAGE_PRESENT);
+    ScopedStage stage(*frame.Clock, stage::Present);
     this->Draw(frame, this->Debug.GetImage(), nullptr);
     return;
   }
   {
-    ScopedStage stage(*frame.Clock, vtkVoxelGIPass::STAGE_PRESENT);
+    ScopedStage stage(*frame.Clock, stage::Present);
     this->Draw(frame, this->Compositor.GetDisplay(), this->GBuffer.GetDepth());
   }
   this->RenderedProps = this->RenderRemainingSteps(frame);

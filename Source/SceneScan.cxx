@@ -2,7 +2,6 @@
 
 #include "Frame.h"
 #include "Ranks.h"
-#include "vtkVoxelGIPass.h"
 
 #include "vtkAbstractVolumeMapper.h"
 #include "vtkActor.h"
@@ -14,8 +13,6 @@
 #include "vtkImageMapper3D.h"
 #include "vtkImageSlice.h"
 #include "vtkInformation.h"
-#include "vtkInformationDoubleVectorKey.h"
-#include "vtkInformationIntegerKey.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkMapper.h"
@@ -46,53 +43,8 @@
 namespace voxelgi
 {
 
-bool SetEmissionKey(vtkProp* prop, const double rgb[3])
-{
-  if (!std::all_of(rgb, rgb + 3, [](double v) { return std::isfinite(v) && v >= 0.0; }))
-  {
-    return false;
-  }
-  vtkInformation* info = EnsurePropertyKeys(prop);
-  if (rgb[0] == 0.0 && rgb[1] == 0.0 && rgb[2] == 0.0)
-  {
-    info->Remove(vtkVoxelGIPass::EMISSION());
-  }
-  else
-  {
-    info->Set(vtkVoxelGIPass::EMISSION(), rgb, 3);
-  }
-  return true;
-}
-
-std::array<double, 3> PropEmission(vtkProp* prop)
-{
-  std::array<double, 3> e{ { 0.0, 0.0, 0.0 } };
-  vtkInformation* info = prop->GetPropertyKeys();
-  if (info && info->Has(vtkVoxelGIPass::EMISSION()))
-  {
-    const double* v = info->Get(vtkVoxelGIPass::EMISSION());
-    for (int c = 0; c < 3; ++c)
-    {
-      // Keys set around SetPropEmission() may still hold bad values: never let them through.
-      e[c] = std::isfinite(v[c]) ? std::max(v[c], 0.0) : 0.0;
-    }
-  }
-  return e;
-}
-
-bool Emits(const std::array<double, 3>& emission)
-{
-  return emission[0] > 0.0 || emission[1] > 0.0 || emission[2] > 0.0;
-}
-
 namespace
 {
-bool PropUserDynamic(vtkProp* prop)
-{
-  vtkInformation* info = prop->GetPropertyKeys();
-  return info && info->Has(vtkVoxelGIPass::DYNAMIC()) && info->Get(vtkVoxelGIPass::DYNAMIC());
-}
-
 /// Warning for an actor whose input has NaN or Inf point coordinates, or empty.
 /// (The points of a polydata input, or of every polydata block of a composite input.)
 std::string NonFinitePoints(vtkActor* actor)
@@ -201,17 +153,6 @@ void Merge(double bounds[6], const double* b, bool first)
     bounds[2 * i + 1] = first ? b[2 * i + 1] : std::max(bounds[2 * i + 1], b[2 * i + 1]);
   }
 }
-}
-
-//------------------------------------------------------------------------------
-vtkInformation* EnsurePropertyKeys(vtkProp* prop)
-{
-  if (!prop->GetPropertyKeys())
-  {
-    vtkNew<vtkInformation> info;
-    prop->SetPropertyKeys(info);
-  }
-  return prop->GetPropertyKeys();
 }
 
 //------------------------------------------------------------------------------
@@ -335,7 +276,7 @@ ActorRecord MakeRecord(vtkProp* prop, vtkActor* actor, vtkMTimeType signature,
   }
   // The user's keys are on the prop (a slice's, not its proxy's).
   record.Emission = PropEmission(prop);
-  record.UserDynamic = PropUserDynamic(prop);
+  record.UserDynamic = PropDynamic(prop);
   record.Dynamic = record.UserDynamic || (previous && previous->Dynamic);
   return record;
 }
@@ -483,11 +424,11 @@ bool SceneScan::Due(const Settings& settings, bool settingsChanged, bool pending
   const bool forced = settingsChanged || this->InvalidateRequested;
   switch (settings.UpdatePolicy)
   {
-    case vtkVoxelGIPass::UPDATE_EVERY_FRAME:
+    case UPDATE_EVERY_FRAME:
       return true;
-    case vtkVoxelGIPass::UPDATE_EVERY_N_FRAMES:
+    case UPDATE_EVERY_N_FRAMES:
       return forced || (pending && this->FramesSinceUpdate + 1 >= settings.UpdateInterval);
-    case vtkVoxelGIPass::UPDATE_ON_DEMAND:
+    case UPDATE_ON_DEMAND:
       return forced;
     default:
       return forced || pending;
@@ -563,7 +504,7 @@ bool SceneScan::Scan(vtkRenderer* renderer, const Settings& settings, Ranks& ran
     return true;
   }
   update.Full = found.Full || refit || this->InvalidateRequested ||
-    settings.UpdatePolicy == vtkVoxelGIPass::UPDATE_EVERY_FRAME;
+    settings.UpdatePolicy == UPDATE_EVERY_FRAME;
   this->InvalidateRequested = false;
   this->FramesSinceUpdate = 0;
   update.Grid = this->BuiltGrid;

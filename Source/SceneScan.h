@@ -11,6 +11,7 @@
 #define VoxelGISceneScan_h
 
 #include "ImageSliceProxies.h"
+#include "PropKeys.h"
 #include "VoxelGrid.h"
 
 #include "vtkType.h"         // for vtkMTimeType
@@ -24,7 +25,6 @@
 #include <vector>
 
 class vtkActor;
-class vtkInformation;
 class vtkProp;
 class vtkRenderer;
 
@@ -32,19 +32,6 @@ namespace voxelgi
 {
 class Ranks;
 struct Settings;
-
-/// The prop's property keys, created if it has none (VTK modifies a prop when it gets them).
-vtkInformation* EnsurePropertyKeys(vtkProp* prop);
-
-/// Set (or, for black, remove) a prop's emission key; false, leaving it, for negative or
-/// non-finite values.
-bool SetEmissionKey(vtkProp* prop, const double rgb[3]);
-
-/// A prop's emission key (vtkVoxelGIPass::EMISSION()), non-finite or negative values as 0.
-std::array<double, 3> PropEmission(vtkProp* prop);
-
-/// Whether an emission (as PropEmission returns it) emits anything.
-bool Emits(const std::array<double, 3>& emission);
 
 /// What the scan remembers of a voxelized actor between frames.
 struct ActorRecord

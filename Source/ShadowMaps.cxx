@@ -3,7 +3,7 @@
 #include "Frame.h"
 #include "LightBlock.h"
 #include "VoxelGrid.h"
-#include "vtkVoxelGIPass.h"
+#include "StageIds.h"
 
 #include "vtkActor.h"
 
@@ -173,7 +173,7 @@ void ShadowMaps::Run(const Frame& frame)
   {
     return;
   }
-  ScopedStage stage(*frame.Clock, vtkVoxelGIPass::STAGE_SHADOW_MAPS);
+  ScopedStage stage(*frame.Clock, stage::ShadowMaps);
   // The casters draw through a renderer of ours whose camera is the light's: the user's
   // renderer and camera are left alone (see ViewRenderer).
   vtkRenderer* renderer = this->View.Attach(frame.Window);

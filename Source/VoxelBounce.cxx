@@ -5,7 +5,7 @@
 #include "VoxelGIShaders.h"
 #include "VoxelMipmap.h"
 #include "VoxelizePass.h"
-#include "vtkVoxelGIPass.h"
+#include "StageIds.h"
 
 #include "vtk_glew.h"
 
@@ -22,7 +22,7 @@ bool VoxelBounce::Prepare(const Frame& frame, std::string& error)
 void VoxelBounce::Run(const Frame& frame)
 {
   // Bounce and mipmap timings would nest: time them together.
-  ScopedStage stage(*frame.Clock, vtkVoxelGIPass::STAGE_BOUNCE);
+  ScopedStage stage(*frame.Clock, stage::Bounce);
   for (int bounce = 0; bounce < frame.Plan.Bounces; ++bounce)
   {
     this->Bounce(frame);

@@ -7,7 +7,7 @@
 #ifndef VoxelGIVoxelBounce_h
 #define VoxelGIVoxelBounce_h
 
-#include "ConeTracing.h"
+#include "ConeSettings.h"
 #include "GLHelpers.h"
 
 #include <string>

@@ -4,7 +4,7 @@
 #include "LightVoxels.h"
 #include "VoxelGIShaders.h"
 #include "shader_interface.h"
-#include "vtkVoxelGIPass.h"
+#include "StageIds.h"
 
 #include "vtk_glew.h"
 
@@ -63,7 +63,7 @@ bool VoxelMipmap::Prepare(const Frame& frame, std::string& error)
 
 void VoxelMipmap::Run(const Frame& frame)
 {
-  ScopedStage stage(*frame.Clock, vtkVoxelGIPass::STAGE_MIPMAP);
+  ScopedStage stage(*frame.Clock, stage::Mipmap);
   this->Build(frame.Window);
 }
 

@@ -15,7 +15,7 @@ bool VoxelStages::Relight(const Frame& frame, std::string& error)
   // The light block is bound by the caller; the grid block too.
   bool ok = true;
   // A rank's maps would see its own piece only; the raymarch sees the merged voxels.
-  if (frame.Config.LightOcclusion == vtkVoxelGIPass::LIGHT_OCCLUSION_SHADOW_MAPS &&
+  if (frame.Config.LightOcclusion == LIGHT_OCCLUSION_SHADOW_MAPS &&
     !frame.Processes->Distributed())
   {
     ok = this->Shadows.Prepare(frame, error);

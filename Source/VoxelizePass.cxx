@@ -3,7 +3,7 @@
 #include "Frame.h"
 #include "Ranks.h"
 #include "VoxelGIShaders.h"
-#include "vtkVoxelGIPass.h"
+#include "StageIds.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -284,7 +284,7 @@ void VoxelizePass::AimCamera(const Frame& frame)
 void VoxelizePass::Draw(const Frame& frame, std::vector<vtkProp*>& props, bool staticPass)
 {
   ScopedStage stage(*frame.Clock,
-    staticPass ? vtkVoxelGIPass::STAGE_VOXELIZE_STATIC : vtkVoxelGIPass::STAGE_VOXELIZE_DYNAMIC);
+    staticPass ? stage::VoxelizeStatic : stage::VoxelizeDynamic);
   this->StaticPass = staticPass;
   // The user's renderer and its camera are left alone (observers of its ActiveCameraEvent
   // may render other windows or delete props): the props draw through a renderer of ours.
@@ -319,7 +319,7 @@ void VoxelizePass::BindAccumulators() const
 
 void VoxelizePass::Clear(const Frame& frame)
 {
-  ScopedStage stage(*frame.Clock, vtkVoxelGIPass::STAGE_CLEAR);
+  ScopedStage stage(*frame.Clock, stage::Clear);
   this->BindAccumulators();
   this->BrickList.Bind(VOXELGI_BRICK_LIST_BINDING);
   this->ClearProgram.Use(frame.Window);
@@ -330,7 +330,7 @@ void VoxelizePass::Clear(const Frame& frame)
 
 void VoxelizePass::Resolve(const Frame& frame)
 {
-  ScopedStage stage(*frame.Clock, vtkVoxelGIPass::STAGE_RESOLVE);
+  ScopedStage stage(*frame.Clock, stage::Resolve);
   const unsigned int emptyList[4] = { 0, 1, 1, 0 }; // no brick yet; 1 x 1 in y and z
   this->BrickList.Upload(emptyList, sizeof(emptyList));
   this->BrickList.Bind(VOXELGI_BRICK_LIST_BINDING);

@@ -4,44 +4,28 @@
 #include "FramePlanner.h"
 #include "Gate.h"
 #include "ImageStages.h"
+#include "PropKeys.h"
 #include "Ranks.h"
+#include "StageIds.h"
 #include "VolumeReadback.h"
 #include "VoxelMemory.h"
 #include "VoxelStages.h"
 #include "VoxelView.h"
-#include "vtkVoxelGISettings.h"
+#include "WindowFollower.h"
 
-#include "vtkCommand.h"
-#include "vtkFloatArray.h"
-#include "vtkDataArray.h"
-#include "vtkImageData.h"
-#include "vtkInformation.h"
 #include "vtkInformationDoubleVectorKey.h"
 #include "vtkInformationIntegerKey.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
-#include "vtkPointData.h"
 #include "vtkRenderState.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkRenderer.h"
-#include "vtkWeakPointer.h"
-
-#include <algorithm>
-#include <cmath>
-#include <cstdint>
-#include <sstream>
-#include <vector>
 
 vtkStandardNewMacro(vtkVoxelGIPass);
 vtkCxxSetObjectMacro(vtkVoxelGIPass, DelegatePass, vtkRenderPass);
+
 vtkInformationKeyRestrictedMacro(vtkVoxelGIPass, EMISSION, DoubleVector, 3);
 vtkInformationKeyMacro(vtkVoxelGIPass, DYNAMIC, Integer);
-
-namespace
-{
-constexpr int MinResolution = 16;
-constexpr int MaxResolution = 512;
-}
 
 // The stages, wired to the results they read (see docs/architecture.md), the frame and its
 // plan, and the units that decide whether GI runs.
@@ -49,6 +33,7 @@ struct vtkVoxelGIPass::Internals
 {
   explicit Internals(vtkVoxelGIPass* pass)
     : Gate(pass)
+    , Follower([pass](vtkOpenGLRenderWindow* w) { pass->ReleaseGraphicsResources(w); })
   {
   }
   voxelgi::Gate Gate;
@@ -59,11 +44,9 @@ struct vtkVoxelGIPass::Internals
   voxelgi::StageClock Clock;
   voxelgi::Frame Frame;
   voxelgi::VoxelMemory Memory;
-  vtkWeakPointer<vtkOpenGLRenderWindow> Window; // the window whose context holds the resources
-  unsigned long WindowObserver = 0;
+  voxelgi::WindowFollower Follower; // the window whose context holds the resources
 };
 
-//------------------------------------------------------------------------------
 vtkVoxelGIPass::vtkVoxelGIPass()
   : Internal(new Internals(this))
 {
@@ -73,40 +56,11 @@ vtkVoxelGIPass::vtkVoxelGIPass()
 
 vtkVoxelGIPass::~vtkVoxelGIPass()
 {
-  this->WatchWindow(nullptr);
+  this->Internal->Follower.Follow(nullptr);
   this->SetDelegatePass(nullptr);
   this->SetVoxelSource(nullptr);
 }
 
-//------------------------------------------------------------------------------
-void vtkVoxelGIPass::WatchWindow(vtkOpenGLRenderWindow* window)
-{
-  Internals& in = *this->Internal;
-  if (window == in.Window.GetPointer())
-  {
-    return;
-  }
-  // GL objects are freed with their own context current: when the pass leaves a window, and
-  // when the window goes away (its DeleteEvent comes while its context still exists).
-  if (in.Window)
-  {
-    in.Window->RemoveObserver(in.WindowObserver);
-    in.Window->PushContext();
-    this->ReleaseGraphicsResources(in.Window);
-    in.Window->PopContext();
-  }
-  in.Window = window;
-  in.WindowObserver = window
-    ? window->AddObserver(vtkCommand::DeleteEvent, this, &vtkVoxelGIPass::WindowDeleted)
-    : 0;
-}
-
-void vtkVoxelGIPass::WindowDeleted()
-{
-  this->WatchWindow(nullptr);
-}
-
-//------------------------------------------------------------------------------
 void vtkVoxelGIPass::SetVoxelSource(vtkVoxelGIPass* source)
 {
   // A source owns its voxels: no chains, hence no cycles of references.
@@ -121,31 +75,6 @@ void vtkVoxelGIPass::SetVoxelSource(vtkVoxelGIPass* source)
   vtkSetObjectBodyMacro(VoxelSource, vtkVoxelGIPass, source);
 }
 
-//------------------------------------------------------------------------------
-// Declared by the generated settings base class, for the table's power_of_two setting.
-void vtkVoxelGIPassSettings::SetVoxelResolution(int resolution)
-{
-  const int clamped = voxelgi::ClampResolution(resolution, MinResolution, MaxResolution);
-  if (clamped != resolution)
-  {
-    std::ostringstream message;
-    message << "VoxelResolution " << resolution << " is not a power of two in [16, 512]";
-    if (resolution > MaxResolution)
-    {
-      message << " (it would need "
-              << voxelgi::VoxelizePass::RequiredBytes(resolution, false) / (1024 * 1024)
-              << " MiB of voxel memory)";
-    }
-    vtkWarningMacro(<< message.str() << "; using " << clamped << ".");
-  }
-  if (clamped != this->VoxelResolution)
-  {
-    this->VoxelResolution = clamped;
-    this->Modified();
-  }
-}
-
-//------------------------------------------------------------------------------
 void vtkVoxelGIPass::SetPropEmission(vtkProp* prop, double r, double g, double b)
 {
   const double rgb[3] = { r, g, b };
@@ -162,14 +91,13 @@ void vtkVoxelGIPass::SetPropDynamic(vtkProp* prop, bool dynamic)
 {
   if (prop)
   {
-    voxelgi::EnsurePropertyKeys(prop)->Set(DYNAMIC(), dynamic ? 1 : 0);
+    voxelgi::SetDynamicKey(prop, dynamic);
   }
 }
 
-//------------------------------------------------------------------------------
 bool vtkVoxelGIPass::GetStageRan(int stage) const
 {
-  return stage >= 0 && stage < NUMBER_OF_STAGES && this->Internal->Clock.Ran(stage);
+  return this->Internal->Clock.Ran(stage);
 }
 
 bool vtkVoxelGIPass::GetTraceReused() const
@@ -179,16 +107,12 @@ bool vtkVoxelGIPass::GetTraceReused() const
 
 double vtkVoxelGIPass::GetStageTime(int stage) const
 {
-  return (stage >= 0 && stage < NUMBER_OF_STAGES) ? this->Internal->Clock.Milliseconds(stage)
-                                                  : 0.0;
+  return this->Internal->Clock.Milliseconds(stage);
 }
 
 const char* vtkVoxelGIPass::GetStageName(int stage)
 {
-  static const char* names[NUMBER_OF_STAGES] = { "Scan", "Clear", "VoxelizeStatic",
-    "VoxelizeDynamic", "Resolve", "ShadowMaps", "LightVoxels", "Mipmap", "Bounce", "GBuffer",
-    "ConeTrace", "Composite", "Present", "DebugView" };
-  return (stage >= 0 && stage < NUMBER_OF_STAGES) ? names[stage] : "Unknown";
+  return voxelgi::stage::Name(stage);
 }
 
 int vtkVoxelGIPass::GetGridResolution() const
@@ -254,7 +178,7 @@ voxelgi::VoxelView vtkVoxelGIPass::ViewVoxels() const
 {
   const Internals& in = *this->Internal;
   voxelgi::VoxelView view;
-  view.Window = in.Window;
+  view.Window = in.Follower.Get();
   view.Shares = this->VoxelSource != nullptr;
   view.Active = this->GIActive;
   view.Grid = in.Planner.Scan.GetGrid();
@@ -268,44 +192,33 @@ voxelgi::VoxelView vtkVoxelGIPass::ViewVoxels() const
   return view;
 }
 
-//------------------------------------------------------------------------------
 // The frame: its plan, then each stage the plan asks for. A stage that cannot run turns GI
 // off for the frame (plan.GI), and VTK's image is presented instead.
 void vtkVoxelGIPass::Render(const vtkRenderState* s)
 {
   Internals& in = *this->Internal;
   this->NumberOfRenderedProps = 0;
-  bool renewed = false;
-  if (!in.Gate.Serve(this, s->GetRenderer(), renewed))
+  if (!this->Serve(s->GetRenderer()))
   {
     this->RenderDelegate(s);
     return;
-  }
-  if (renewed)
-  {
-    this->Internal->Planner.Forget();
   }
   voxelgi::FramePlan& plan = this->PlanFrame(s);
   plan.GI = plan.GI && this->Voxelize();
   plan.GI = plan.GI && this->Relight();
   plan.GI = plan.GI && this->Trace();
   this->Present();
-  in.Clock.Resolve(NUMBER_OF_STAGES);
+  in.Clock.Resolve();
 }
 
 void vtkVoxelGIPass::RenderRanks(vtkRenderer* renderer)
 {
   Internals& in = *this->Internal;
   in.Processes.Update();
-  bool renewed = false;
   if (!in.Processes.Distributed() || this->VoxelSource || !this->DelegatePass ||
-    !in.Gate.Serve(this, renderer, renewed))
+    !this->Serve(renderer))
   {
     return;
-  }
-  if (renewed)
-  {
-    this->Internal->Planner.Forget();
   }
   voxelgi::FramePlan& plan = this->PlanVoxels(renderer, nullptr);
   plan.GI = plan.GI && this->Voxelize();
@@ -315,7 +228,17 @@ void vtkVoxelGIPass::RenderRanks(vtkRenderer* renderer)
   this->GIActive = plan.GI;
 }
 
-//------------------------------------------------------------------------------
+bool vtkVoxelGIPass::Serve(vtkRenderer* renderer)
+{
+  bool renewed = false;
+  const bool serves = this->Internal->Gate.Serve(this, renderer, renewed);
+  if (renewed)
+  {
+    this->Internal->Planner.Forget();
+  }
+  return serves;
+}
+
 voxelgi::FramePlan& vtkVoxelGIPass::PlanFrame(const vtkRenderState* s)
 {
   Internals& in = *this->Internal;
@@ -330,10 +253,6 @@ voxelgi::FramePlan& vtkVoxelGIPass::PlanFrame(const vtkRenderState* s)
   {
     this->PlanVoxels(s->GetRenderer(), s);
   }
-  frame.Voxelization = in.Voxels.Voxelize;
-  frame.Lighting = &in.Voxels.Lighting;
-  frame.Mipmap = &in.Voxels.Mipmap;
-  frame.Shadows = &in.Voxels.Shadows;
   if (this->VoxelSource)
   {
     frame.Plan.GI = frame.Plan.GI && this->FollowSource();
@@ -362,11 +281,15 @@ voxelgi::FramePlan& vtkVoxelGIPass::PlanVoxels(vtkRenderer* renderer, const vtkR
   const bool admitted = in.Gate.Admit(this, this->DelegatePass, renderer, this->Enabled != 0);
   if (admitted)
   {
-    this->WatchWindow(vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow()));
-    frame.Window = in.Window;
+    in.Follower.Follow(vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow()));
+    frame.Window = in.Follower.Get();
     frame.Delegate = this->DelegatePass;
     frame.Processes = &in.Processes;
     frame.Clock = &in.Clock;
+    frame.Voxelization = in.Voxels.Voxelize;
+    frame.Lighting = &in.Voxels.Lighting;
+    frame.Mipmap = &in.Voxels.Mipmap;
+    frame.Shadows = &in.Voxels.Shadows;
     renderer->GetTiledSizeAndOrigin(&frame.Width, &frame.Height, &frame.X, &frame.Y);
     frame.Config = voxelgi::Snapshot(this, in.Gate.HasConservativeRaster());
   }
@@ -381,29 +304,15 @@ voxelgi::FramePlan& vtkVoxelGIPass::PlanVoxels(vtkRenderer* renderer, const vtkR
 bool vtkVoxelGIPass::FollowSource()
 {
   Internals& in = *this->Internal;
-  const voxelgi::VoxelView source = this->VoxelSource->ViewVoxels();
-  const char* error = source.Shares
-    ? "its VoxelSource shares another pass's voxels itself"
-    : (source.Window && source.Window != in.Window
-          ? "its VoxelSource renders into another window (voxels stay in their window's context)"
-          : nullptr);
-  if (error)
-  {
-    in.Gate.Error(voxelgi::Gate::Source,
-      std::string("Voxel GI cannot run: ") + error + ". Rendering without GI.");
-    return false;
-  }
-  in.Gate.Clear(voxelgi::Gate::Source);
   // Voxels of the pass's own from before it shared the source's are not needed any more.
   if (in.Planner.Scan.GetGrid().Resolution > 0)
   {
-    this->ReleaseVoxelStages(in.Window);
+    this->ReleaseVoxelStages(in.Follower.Get());
     in.Planner.Scan.Reset();
   }
-  return in.Planner.PlanSource(in.Frame, source, this->GetMTime());
+  return in.Planner.PlanSource(in.Frame, this->VoxelSource->ViewVoxels(), this->GetMTime());
 }
 
-//------------------------------------------------------------------------------
 bool vtkVoxelGIPass::Voxelize()
 {
   Internals& in = *this->Internal;
@@ -415,25 +324,18 @@ bool vtkVoxelGIPass::Voxelize()
     return !refused;
   }
   std::string error;
-  bool prepared = !refused &&
+  const bool prepared = !refused &&
     in.Memory.Fits(update.Emission, frame.Config, this->GetVoxelMemoryBytes(), error) &&
     in.Voxels.Voxelize->Prepare(frame, error);
-  if (!refused && !prepared)
-  {
-    this->Refuse(error);
-  }
   // Ranks voxelize together (every Run is collective when distributed).
-  if (in.Processes.Distributed())
+  if (!in.Processes.All(prepared))
   {
-    const bool all = in.Processes.All(prepared);
-    if (prepared && !all)
+    if (!refused)
     {
-      this->Refuse("another rank could not prepare its voxel volumes (that rank says why)");
+      this->Refuse(prepared
+          ? "another rank could not prepare its voxel volumes (that rank says why)"
+          : error);
     }
-    prepared = all;
-  }
-  if (!prepared)
-  {
     in.Planner.Scan.Reset();
     return false;
   }
@@ -500,7 +402,6 @@ void vtkVoxelGIPass::Present()
   in.Planner.Presented(frame, frame.Plan.GI && !frame.Plan.VoxelView, this->GetMTime());
 }
 
-//------------------------------------------------------------------------------
 void vtkVoxelGIPass::RenderDelegate(const vtkRenderState* s)
 {
   if (this->DelegatePass)
@@ -522,16 +423,15 @@ void vtkVoxelGIPass::Refuse(const std::string& error)
 {
   Internals& in = *this->Internal;
   in.Gate.Refuse(this->Configuration(), error);
-  this->ReleaseStages(in.Window);
+  this->ReleaseStages(in.Follower.Get());
   this->Internal->Planner.Forget();
 }
 
-//------------------------------------------------------------------------------
 bool vtkVoxelGIPass::GetFloatImage(int image, vtkFloatArray* pixels)
 {
   Internals& in = *this->Internal;
   return in.Planner.History.HasTracedImage() &&
-    voxelgi::ReadImage(in.Images.Compositor, in.Window, image, pixels);
+    voxelgi::ReadImage(in.Images.Compositor, in.Follower.Get(), image, pixels);
 }
 
 bool vtkVoxelGIPass::GetVoxelVolume(int volume, vtkImageData* image)
@@ -539,13 +439,12 @@ bool vtkVoxelGIPass::GetVoxelVolume(int volume, vtkImageData* image)
   return voxelgi::ReadVolume(this->TracedVoxels(), volume, image);
 }
 
-//------------------------------------------------------------------------------
 void vtkVoxelGIPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   Internals& in = *this->Internal;
   this->ReleaseStages(w);
   in.Clock.ReleaseGraphicsResources();
-  this->Internal->Planner.Forget();
+  in.Planner.Forget();
   in.Gate.ReleaseGraphicsResources();
   if (this->DelegatePass)
   {
@@ -570,7 +469,6 @@ void vtkVoxelGIPass::ReleaseStages(vtkWindow* w)
   in.Images.ReleaseGraphicsResources(w);
 }
 
-//------------------------------------------------------------------------------
 void vtkVoxelGIPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
@@ -583,26 +481,11 @@ void vtkVoxelGIPass::PrintSelf(ostream& os, vtkIndent indent)
   {
     os << "(none)\n";
   }
-  // Every setting of the table, so that none can be forgotten here.
-  for (int i = 0; i < vtkVoxelGISettings::GetNumberOfSettings(); ++i)
-  {
-    const char* name = vtkVoxelGISettings::GetName(i);
-    os << indent << name << ": " << vtkVoxelGISettings::GetValue(this, name) << "\n";
-  }
   os << indent << "VoxelSource: " << static_cast<void*>(this->VoxelSource) << "\n";
   os << indent << "GIActive: " << this->GIActive << "\n";
   const voxelgi::VoxelGrid grid = this->TracedVoxels().Grid;
   os << indent << "Grid: " << grid.Resolution << "^3 voxels of " << grid.VoxelSize << " from ("
      << grid.Origin.x << ", " << grid.Origin.y << ", " << grid.Origin.z << ")\n";
   os << indent << "VoxelMemoryBytes: " << this->GetVoxelMemoryBytes() << "\n";
-  for (int stage = 0; stage < NUMBER_OF_STAGES; ++stage)
-  {
-    const bool ran = this->GetStageRan(stage);
-    os << indent << "Stage " << GetStageName(stage) << ": " << (ran ? "ran" : "skipped");
-    if (ran && this->TimeStages)
-    {
-      os << ", " << this->GetStageTime(stage) << " ms";
-    }
-    os << "\n";
-  }
+  this->Internal->Clock.Print(os, indent);
 }

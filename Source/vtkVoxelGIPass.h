@@ -264,14 +264,10 @@ protected:
   vtkVoxelGIPass();
   ~vtkVoxelGIPass() override;
 
-  /// Release everything on the window the pass rendered to last, and follow `window`.
-  void WatchWindow(vtkOpenGLRenderWindow* window);
-  void WindowDeleted();
-
   ///@{
   /// The frame plan (FramePlan.h, built by FramePlanner): whether GI runs and what each
   /// stage does. PlanVoxels is the ranks' part (the gate, the ranks' agreement, the scan);
-  /// FollowSource checks and follows the VoxelSource.
+  /// FollowSource plans from the VoxelSource's voxels (FramePlanner::PlanSource).
   voxelgi::FramePlan& PlanFrame(const vtkRenderState* s);
   voxelgi::FramePlan& PlanVoxels(vtkRenderer* renderer, const vtkRenderState* s);
   bool FollowSource();
@@ -288,6 +284,9 @@ protected:
   void Present();
   ///@}
 
+  /// Whether the pass serves `renderer` (Gate::Serve); a new renderer forgets the last one's
+  /// voxels and images.
+  bool Serve(vtkRenderer* renderer);
   /// Render VTK's own image.
   void RenderDelegate(const vtkRenderState* s);
   /// The frame's configuration, as refusals are remembered.

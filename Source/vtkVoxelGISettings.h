@@ -16,7 +16,7 @@
 #include "vtkObject.h"
 #include "vtkRenderingVoxelGIModule.h" // for export macro
 
-class vtkVoxelGIPass;
+class vtkVoxelGIPassSettings;
 
 class VTKRENDERINGVOXELGI_EXPORT vtkVoxelGISettings : public vtkObject
 {
@@ -58,8 +58,8 @@ public:
    * an unknown name or NaN (the setting keeps its value). GetValue warns about an unknown
    * name and returns 0.
    */
-  static double GetValue(vtkVoxelGIPass* pass, const char* name);
-  static bool SetValue(vtkVoxelGIPass* pass, const char* name, double value);
+  static double GetValue(vtkVoxelGIPassSettings* pass, const char* name);
+  static bool SetValue(vtkVoxelGIPassSettings* pass, const char* name, double value);
 
 protected:
   vtkVoxelGISettings() = default;

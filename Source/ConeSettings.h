@@ -3,8 +3,8 @@
  * VoxelBounce and the per-pixel ConeTrace: the cone directions and the samplers and uniforms
  * of the radiance volume and its mipmaps.
  */
-#ifndef VoxelGIConeTracing_h
-#define VoxelGIConeTracing_h
+#ifndef VoxelGIConeSettings_h
+#define VoxelGIConeSettings_h
 
 #include "GLHelpers.h"
 #include "VoxelMipmap.h"

@@ -1,4 +1,4 @@
-#include "ConeTracing.h"
+#include "ConeSettings.h"
 
 #include "Frame.h"
 
