@@ -36,7 +36,8 @@ bool FramePlanner::PlanVoxels(Frame& frame, bool admitted, int gbufferSamples)
   }
   ScanMessages messages;
   const bool ok =
-    this->Scan.Scan(frame.Renderer, frame.Config, this->Processes, frame.Plan.Voxels, messages);
+    this->Scan.Scan(frame.Renderer, frame.Config, this->Processes, frame.Plan.Voxels, messages,
+      frame.State != nullptr);
   frame.Clock->SetCpuTime(stage::Scan, this->Scan.GetMilliseconds());
   for (const std::string& warning : messages.Warnings)
   {

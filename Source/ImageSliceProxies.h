@@ -34,7 +34,7 @@ public:
   /// translucent.
   static std::string LeftOutReason(vtkImageSlice* slice);
   /// The up-to-date proxy of `slice` (LeftOutReason() empty) whose signature the scan found
-  /// (SceneScan::PropSignature), or null with `reason` when its displayed slice has no area
+  /// (PropReader::PropSignature), or null with `reason` when its displayed slice has no area
   /// or no scalars.
   vtkActor* Update(vtkImageSlice* slice, vtkMTimeType signature, std::string& reason);
   /// Drop the proxies of slices not in `kept`.

@@ -3,33 +3,22 @@
 #include "Frame.h"
 #include "Ranks.h"
 
-#include "vtkAbstractVolumeMapper.h"
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataObject.h"
-#include "vtkGlyph3DMapper.h"
-#include "vtkImageMapper3D.h"
 #include "vtkImageSlice.h"
 #include "vtkInformation.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkMapper.h"
 #include "vtkMath.h"
-#include "vtkNew.h"
-#include "vtkOpenGLPolyDataMapper.h"
-#include "vtkPlane.h"
-#include "vtkPlaneCollection.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPropCollection.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
-#include "vtkShaderProperty.h"
-#include "vtkTexture.h"
-#include "vtkUniforms.h"
-#include "vtkVolume.h"
 
 #include <algorithm>
 #include <chrono>
@@ -38,7 +27,6 @@
 #include <sstream>
 #include <map>
 #include <set>
-#include <unordered_map>
 
 namespace voxelgi
 {
@@ -88,62 +76,6 @@ std::string NonFinitePoints(vtkActor* actor)
   return text.str();
 }
 
-/// Why a visible prop with bounds is not voxelized (empty: it is): its class, and the reason.
-std::string LeftOutReason(vtkProp* prop)
-{
-  if (auto* slice = vtkImageSlice::SafeDownCast(prop))
-  {
-    return ImageSliceProxies::LeftOutReason(slice);
-  }
-  vtkActor* actor = vtkActor::SafeDownCast(prop);
-  if (!actor)
-  {
-    return std::string(prop->GetClassName()) +
-      (prop->IsA("vtkVolume") ? " (a volume)" : " (not an actor)");
-  }
-  vtkMapper* mapper = actor->GetMapper();
-  // Glyph mappers draw every instance through a polydata helper: voxelized like polygons.
-  if (!vtkOpenGLPolyDataMapper::SafeDownCast(mapper) && !vtkGlyph3DMapper::SafeDownCast(mapper))
-  {
-    return std::string(prop->GetClassName()) + " with a " +
-      (mapper ? mapper->GetClassName() : "null mapper") + " (not a polydata mapper)";
-  }
-  // Imposter mappers draw points and lines as shaded spheres and cylinders: no triangles.
-  if (mapper->IsA("vtkOpenGLSphereMapper") || mapper->IsA("vtkOpenGLStickMapper"))
-  {
-    return std::string(prop->GetClassName()) + " with a " + mapper->GetClassName() +
-      " (imposter spheres or sticks, no triangles)";
-  }
-  if (actor->GetProperty()->GetRepresentation() != VTK_SURFACE)
-  {
-    return std::string(prop->GetClassName()) + " (points or wireframe representation)";
-  }
-  if (!actor->HasOpaqueGeometry())
-  {
-    return std::string(prop->GetClassName()) + " (translucent)";
-  }
-  return std::string();
-}
-
-/// Whether VTK draws lines for the prop (wireframe, edges, line cells, 3D text and axes):
-/// what a multisampled window anti-aliases most visibly.
-bool DrawsLines(vtkProp* prop)
-{
-  if (prop->IsA("vtkTextActor3D") || prop->IsA("vtkCubeAxesActor") ||
-    prop->IsA("vtkPolarAxesActor") || prop->IsA("vtkAxesActor"))
-  {
-    return true;
-  }
-  vtkActor* actor = vtkActor::SafeDownCast(prop);
-  if (!actor || !actor->GetMapper())
-  {
-    return false;
-  }
-  vtkProperty* property = actor->GetProperty();
-  auto* poly = vtkPolyData::SafeDownCast(actor->GetMapper()->GetInputDataObject(0, 0));
-  return property->GetRepresentation() == VTK_WIREFRAME || property->GetEdgeVisibility() ||
-    (poly && poly->GetNumberOfLines() > 0);
-}
 
 void Merge(double bounds[6], const double* b, bool first)
 {
@@ -153,104 +85,6 @@ void Merge(double bounds[6], const double* b, bool first)
     bounds[2 * i + 1] = first ? b[2 * i + 1] : std::max(bounds[2 * i + 1], b[2 * i + 1]);
   }
 }
-}
-
-//------------------------------------------------------------------------------
-namespace
-{
-/// Latest modification of an algorithm's inputs: every connection of every port (a glyph
-/// mapper's source, an image's pipeline), the data and the algorithm producing it.
-vtkMTimeType InputsTime(vtkAlgorithm* algorithm)
-{
-  vtkMTimeType t = 0;
-  for (int port = 0; algorithm && port < algorithm->GetNumberOfInputPorts(); ++port)
-  {
-    for (int c = 0; c < algorithm->GetNumberOfInputConnections(port); ++c)
-    {
-      if (vtkDataObject* data = algorithm->GetInputDataObject(port, c))
-      {
-        t = std::max(t, data->GetMTime());
-      }
-      if (vtkAlgorithm* producer = algorithm->GetInputAlgorithm(port, c))
-      {
-        t = std::max(t, producer->GetMTime());
-      }
-    }
-  }
-  return t;
-}
-
-/// What a mapper draws with beyond its own settings: the planes it clips with (moving a
-/// plane does not modify the mapper or its plane collection).
-vtkMTimeType ClippingTime(vtkAbstractMapper* mapper)
-{
-  vtkMTimeType t = 0;
-  if (vtkPlaneCollection* planes = mapper->GetClippingPlanes())
-  {
-    t = planes->GetMTime();
-    for (int i = 0; i < planes->GetNumberOfItems(); ++i)
-    {
-      t = std::max(t, planes->GetItem(i)->GetMTime());
-    }
-  }
-  return t;
-}
-
-/// The actor's textures' images and its shader uniforms, which its own time does not cover.
-vtkMTimeType MaterialTime(vtkActor* actor)
-{
-  vtkMTimeType t = 0;
-  if (vtkTexture* texture = actor->GetTexture())
-  {
-    t = std::max(t, InputsTime(texture));
-  }
-  for (const auto& named : actor->GetProperty()->GetAllTextures())
-  {
-    t = std::max(t, InputsTime(named.second));
-  }
-  if (vtkShaderProperty* shaders = actor->GetShaderProperty())
-  {
-    t = std::max({ t, shaders->GetMTime(), shaders->GetVertexCustomUniforms()->GetMTime(),
-      shaders->GetFragmentCustomUniforms()->GetMTime(),
-      shaders->GetGeometryCustomUniforms()->GetMTime() });
-  }
-  return t;
-}
-}
-
-vtkMTimeType SceneScan::ActorSignature(vtkActor* actor, vtkMTimeType* inputTime)
-{
-  vtkMapper* mapper = actor->GetMapper();
-  vtkDataObject* input = mapper->GetInputDataObject(0, 0);
-  const vtkMTimeType inputModified = input ? input->GetMTime() : 0;
-  if (inputTime)
-  {
-    *inputTime = inputModified;
-  }
-  return std::max({ actor->GetMTime(), mapper->GetMTime(), inputModified, InputsTime(mapper),
-    ClippingTime(mapper), MaterialTime(actor) });
-}
-
-vtkMTimeType SceneScan::PropSignature(vtkProp* prop, vtkMTimeType* inputTime)
-{
-  vtkActor* actor = vtkActor::SafeDownCast(prop);
-  if (actor && actor->GetMapper())
-  {
-    return ActorSignature(actor, inputTime);
-  }
-  // Images and volumes: their mapper and its inputs.
-  vtkAbstractMapper* mapper = nullptr;
-  if (vtkImageSlice* slice = vtkImageSlice::SafeDownCast(prop))
-  {
-    mapper = slice->GetMapper();
-  }
-  else if (vtkVolume* volume = vtkVolume::SafeDownCast(prop))
-  {
-    mapper = volume->GetMapper();
-  }
-  return mapper ? std::max({ prop->GetMTime(), mapper->GetMTime(), InputsTime(mapper),
-                    ClippingTime(mapper) })
-                : prop->GetMTime();
 }
 
 //------------------------------------------------------------------------------
@@ -282,19 +116,12 @@ ActorRecord MakeRecord(vtkProp* prop, vtkActor* actor, vtkMTimeType signature,
 }
 }
 
-bool SceneScan::Collect(vtkRenderer* renderer, std::vector<ActorRecord>& records,
-  double bounds[6], std::vector<std::string>& warnings)
+bool SceneScan::Collect(vtkRenderer* renderer, bool inRender,
+  std::vector<ActorRecord>& records, double bounds[6], std::vector<std::string>& warnings)
 {
   // Every visible opaque surface actor drawn by a polydata mapper, including the ones outside
   // the view frustum (they still cast and reflect light).
-  std::unordered_map<vtkActor*, const ActorRecord*> previous;
-  for (const ActorRecord& record : this->Records)
-  {
-    if (record.Actor)
-    {
-      previous[record.Actor] = &record;
-    }
-  }
+  this->RecordIndex.clear();
   vtkMath::UninitializeBounds(bounds);
   std::map<std::string, int> leftOut; // visible 3D props VTK renders without GI, by reason
   std::set<vtkProp*> slices;          // image slices voxelized through proxies
@@ -302,30 +129,24 @@ bool SceneScan::Collect(vtkRenderer* renderer, std::vector<ActorRecord>& records
   bool anyLines = false;
   vtkPropCollection* props = renderer->GetViewProps();
   this->PropSignatures.clear();
+  this->Reader.Begin(renderer, inRender);
   vtkCollectionSimpleIterator it;
   props->InitTraversal(it);
   while (vtkProp* prop = props->GetNextProp(it))
   {
-    // Empty props (e.g. ParaView's selection and axes actors) are neither voxelized nor
-    // worth a warning.
-    const double* b = prop->GetVisibility() ? prop->GetBounds() : nullptr;
-    // After the bounds (they update the prop's pipeline) and the keys (VTK modifies a prop
-    // when it first gets property keys): the prop's signature, for the records and the key
-    // of the traced image alike.
-    EnsurePropertyKeys(prop);
-    vtkMTimeType inputTime = 0;
-    const vtkMTimeType signature = PropSignature(prop, &inputTime);
+    const PropReading& reading = this->Reader.Read(prop);
+    const vtkMTimeType signature = reading.Signature;
     this->PropSignatures.push_back(signature);
-    if (!b || !vtkMath::AreBoundsInitialized(b))
+    if (!reading.HasBounds)
     {
       continue;
     }
-    anyLines = anyLines || DrawsLines(prop);
-    const std::string reason = LeftOutReason(prop);
-    if (!reason.empty())
+    const double* b = reading.Bounds;
+    anyLines = anyLines || reading.Lines;
+    if (!reading.LeftOut.empty())
     {
       // 2D props (text, legends, scalar bars) have no bounds and never get here.
-      ++leftOut[reason];
+      ++leftOut[reading.LeftOut];
       continue;
     }
     if (!std::all_of(b, b + 6, [](double v) { return std::isfinite(v); }))
@@ -347,17 +168,38 @@ bool SceneScan::Collect(vtkRenderer* renderer, std::vector<ActorRecord>& records
         continue;
       }
     }
-    const auto found = previous.find(actor);
-    records.push_back(MakeRecord(prop, actor, signature, inputTime,
-      found != previous.end() ? found->second : nullptr, warnings));
+    records.push_back(MakeRecord(
+      prop, actor, signature, reading.InputTime, this->Previous(actor, records.size()), warnings));
     Merge(bounds, b, records.size() == 1);
     anySpecular = anySpecular || actor->GetProperty()->GetSpecular() > 0.0;
   }
+  this->Reader.End();
   this->Slices.Retain(slices);
   this->ReportLeftOut(leftOut, warnings);
   this->AnySpecular = anySpecular;
   this->AnyLines = anyLines;
   return !records.empty();
+}
+
+const ActorRecord* SceneScan::Previous(vtkActor* actor, std::size_t position)
+{
+  // Scenes keep their order from frame to frame: look where the actor was first.
+  if (position < this->Records.size() && this->Records[position].Actor == actor)
+  {
+    return &this->Records[position];
+  }
+  if (this->RecordIndex.empty())
+  {
+    for (const ActorRecord& record : this->Records)
+    {
+      if (record.Actor)
+      {
+        this->RecordIndex[record.Actor] = &record;
+      }
+    }
+  }
+  const auto found = this->RecordIndex.find(actor);
+  return found != this->RecordIndex.end() ? found->second : nullptr;
 }
 
 void SceneScan::ReportLeftOut(
@@ -452,7 +294,7 @@ struct Findings
 }
 
 bool SceneScan::Scan(vtkRenderer* renderer, const Settings& settings, Ranks& ranks,
-  VoxelUpdate& update, ScanMessages& messages)
+  VoxelUpdate& update, ScanMessages& messages, bool inRender)
 {
   const auto start = std::chrono::steady_clock::now();
   struct StopWatch
@@ -469,7 +311,7 @@ bool SceneScan::Scan(vtkRenderer* renderer, const Settings& settings, Ranks& ran
   update = VoxelUpdate();
   std::vector<ActorRecord> records;
   Findings found;
-  found.Collected = this->Collect(renderer, records, found.Bounds, messages.Warnings);
+  found.Collected = this->Collect(renderer, inRender, records, found.Bounds, messages.Warnings);
   this->Compare(records, settings.AutoDynamic, found.Full, found.Dynamic);
   for (const ActorRecord& record : records)
   {
@@ -549,7 +391,7 @@ void SceneScan::RefreshSignatures()
   {
     if (record.Actor)
     {
-      record.Signature = ActorSignature(record.Actor);
+      record.Signature = PropReader::ActorSignature(record.Actor);
     }
   }
 }
@@ -558,7 +400,7 @@ void SceneScan::RefreshSignatures()
 std::vector<unsigned long long> SceneScan::ImageKey(
   vtkRenderer* renderer, vtkMTimeType settingsTime, bool scanned) const
 {
-  const std::vector<vtkMTimeType>* signatures = scanned ? &this->PropSignatures : nullptr;
+  const std::vector<vtkMTimeType>* signatures = &this->PropSignatures;
   std::vector<unsigned long long> key{ renderer->GetMTime(), settingsTime,
     renderer->GetActiveCamera()->GetMTime() };
   int size[4];
@@ -573,7 +415,15 @@ std::vector<unsigned long long> SceneScan::ImageKey(
   std::size_t i = 0;
   while (vtkProp* prop = renderer->GetViewProps()->GetNextProp(it))
   {
-    key.push_back(signatures ? (*signatures)[i++] : PropSignature(prop));
+    if (!signatures)
+    {
+      key.push_back(PropReader::PropSignature(prop));
+    }
+    else
+    {
+      const vtkMTimeType signature = (*signatures)[i++];
+      key.push_back(scanned ? signature : PropReader::DrawnSignature(prop, signature));
+    }
     key.push_back(prop->GetVisibility());
   }
   // Every light VTK shades with (the light block holds the first 16 only).

@@ -12,6 +12,7 @@
 
 #include "ImageSliceProxies.h"
 #include "PropKeys.h"
+#include "PropReader.h"
 #include "VoxelGrid.h"
 
 #include "vtkType.h"         // for vtkMTimeType
@@ -22,6 +23,7 @@
 #include <map>
 #include <set>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 class vtkActor;
@@ -67,9 +69,11 @@ public:
   /// false when there is nothing to voxelize or no grid fits the scene (then `messages` has
   /// the error): GI cannot run this frame. `update` says what to rebuild. Distributed
   /// `ranks` agree on one grid around all their pieces and on one update (a collective
-  /// call); a rank without a piece then voxelizes nothing and still takes part.
+  /// call); a rank without a piece then voxelizes nothing and still takes part. `inRender`:
+  /// the scan runs inside the renderer's Render(), after VTK's culler read the props' bounds
+  /// (PropReader), not ahead of it.
   bool Scan(vtkRenderer* renderer, const Settings& settings, Ranks& ranks, VoxelUpdate& update,
-    ScanMessages& messages);
+    ScanMessages& messages, bool inRender = false);
   /// The voxels were rebuilt as `update` said: remember what they were built from.
   void Accept(const VoxelUpdate& update, const Settings& settings);
   /// The voxels are gone (released, or could not be built): the next scan rebuilds all.
@@ -93,24 +97,19 @@ public:
 
   /// What the renderer's image shows: renderer, camera, viewport, props, lights and the
   /// pass's settings (as `settingsTime`); equal keys, equal images. `scanned`: the props'
-  /// signatures as the last Scan() read them (the voxelization in between changes what VTK
-  /// draws, not what the image is made from); else read now (after VTK drew the frame, what
-  /// it modified while drawing, such as a mapper's default lookup table, is not a change).
+  /// signatures as this frame's Scan() read them (the voxelization in between changes what
+  /// VTK draws, not what the image is made from); else as VTK drew them (what it modified
+  /// while drawing, such as a mapper's default lookup table, is not a change). Props are read
+  /// in full when the frame has not scanned them (a pass that follows a voxel source).
   std::vector<unsigned long long> ImageKey(
     vtkRenderer* renderer, vtkMTimeType settingsTime, bool scanned) const;
 
-  /// Latest modification time of an actor and of what it is drawn from: its mapper, every
-  /// input of the mapper, the planes it clips with, its textures' images and its shader
-  /// uniforms (the first input's own time into `inputTime`, when given).
-  static vtkMTimeType ActorSignature(vtkActor* actor, vtkMTimeType* inputTime = nullptr);
-  /// A prop's signature for the image key: actors as above, images and volumes with their
-  /// mappers' inputs, other props (overlays) by their own time.
-  static vtkMTimeType PropSignature(vtkProp* prop, vtkMTimeType* inputTime = nullptr);
-
 private:
   /// Collect the visible opaque surface actors; false when there is none.
-  bool Collect(vtkRenderer* renderer, std::vector<ActorRecord>& records, double bounds[6],
-    std::vector<std::string>& warnings);
+  bool Collect(vtkRenderer* renderer, bool inRender, std::vector<ActorRecord>& records,
+    double bounds[6], std::vector<std::string>& warnings);
+  /// The record of `actor` in the accepted records, looked up first at `position` (null: new).
+  const ActorRecord* Previous(vtkActor* actor, std::size_t position);
   /// Warn once about each new kind of prop left to VTK (`leftOut`: reason -> count).
   void ReportLeftOut(const std::map<std::string, int>& leftOut, std::vector<std::string>& warnings);
   /// Compare with the accepted records: full rebuild, dynamic change, or nothing.
@@ -119,8 +118,10 @@ private:
   bool Due(const Settings& settings, bool settingsChanged, bool pending);
 
   ImageSliceProxies Slices; // image slices as textured quads
+  PropReader Reader;        // what each view prop is, kept between frames
   std::vector<ActorRecord> Records;
   std::vector<ActorRecord> Pending; // scanned, waiting for Accept()
+  std::unordered_map<vtkActor*, const ActorRecord*> RecordIndex; // of Records, built on need
   bool Voxelized = false;
   VoxelGrid BuiltGrid;
   double BuiltPadding = -1.0;

@@ -304,12 +304,13 @@ voxelgi::FramePlan& vtkVoxelGIPass::PlanVoxels(vtkRenderer* renderer, const vtkR
 bool vtkVoxelGIPass::FollowSource()
 {
   Internals& in = *this->Internal;
-  // Voxels of the pass's own from before it shared the source's are not needed any more.
+  // Voxels of the pass's own from before it shared the source's are not needed any more,
+  // nor what its scans read.
   if (in.Planner.Scan.GetGrid().Resolution > 0)
   {
     this->ReleaseVoxelStages(in.Follower.Get());
-    in.Planner.Scan.Reset();
   }
+  in.Planner.Scan.Reset();
   return in.Planner.PlanSource(in.Frame, this->VoxelSource->ViewVoxels(), this->GetMTime());
 }
 

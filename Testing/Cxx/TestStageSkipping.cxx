@@ -7,6 +7,8 @@
 // be seen: a clipping plane moved, a texture's image, a shader uniform, a glyph mapper's
 // source (glyphs are voxelized), an image actor's image, a light beyond the light block's 16.
 // A headlight relights the voxels only after turning by more than CameraLightTurn.
+// A source two steps up an actor's pipeline changed: the scan reads what VTK's frustum
+// culler already updated this frame, and updates the pipeline itself without that culler.
 #include "VoxelGITestUtilities.h"
 #include "vtkVoxelGIPass.h"
 #include "vtkVoxelGIScenes.h"
@@ -15,6 +17,9 @@
 #include "vtkCamera.h"
 #include "vtkCubeAxesActor.h"
 #include "vtkCubeSource.h"
+#include "vtkCuller.h"
+#include "vtkCullerCollection.h"
+#include "vtkElevationFilter.h"
 #include "vtkLegendBoxActor.h"
 #include "vtkLookupTable.h"
 #include "vtkScalarBarActor.h"
@@ -146,6 +151,14 @@ int TestStageSkipping(int, char*[])
   sliceActor->GetMapper()->SetInputData(slice);
   sliceActor->SetPosition(1.8, 0.5, -2.5); // clear of the floor: no voxels shared
   renderer->AddActor(sliceActor);
+  // Floating clear of everything (no voxels shared), its geometry through a filter.
+  vtkNew<vtkSphereSource> floatingSource;
+  floatingSource->SetCenter(0.0, 1.3, -1.5);
+  floatingSource->SetRadius(0.2);
+  vtkNew<vtkElevationFilter> elevation;
+  elevation->SetInputConnection(floatingSource->GetOutputPort());
+  vtkActor* floating = vtkVoxelGIScenes::AddSource(renderer, elevation, 0.3, 0.8, 0.3);
+  floating->GetMapper()->ScalarVisibilityOff();
   vtkNew<vtkCubeSource> cubeSource;
   cubeSource->SetBounds(0.5, 1.5, 0.0, 1.0, -0.5, 0.5);
   vtkActor* cube = vtkVoxelGIScenes::AddSource(renderer, cubeSource, 0.2, 0.4, 0.9);
@@ -215,6 +228,8 @@ int TestStageSkipping(int, char*[])
         slice->Modified();
       },
       Full },
+    { "a source upstream of a filter changed", [&] { floatingSource->SetCenter(0.4, 1.3, -1.5); },
+      Full },
     { "sixteen more lights",
       [&] {
         for (int l = 0; l < 16; ++l)
@@ -261,6 +276,20 @@ int TestStageSkipping(int, char*[])
     std::cout << "  largest difference from a full recompute: " << difference << std::endl;
     VOXELGI_CHECK(difference < c.Tolerance, c.Name << ": skipping changed the image");
   }
+
+  // Without VTK's frustum culler nothing updated the pipelines before the pass.
+  vtkSmartPointer<vtkCuller> culler = renderer->GetCullers()->GetLastItem();
+  renderer->GetCullers()->RemoveAllItems();
+  window->Render();
+  floatingSource->SetCenter(0.0, 1.3, -1.5);
+  window->Render();
+  VOXELGI_CHECK(StagesRan(gi) == "Scan,Clear,VoxelizeDynamic,Resolve," + Relight,
+    "without a culler, an upstream change ran " << StagesRan(gi));
+  const double unculled = DifferenceFromFullRecompute(renderer, window, gi);
+  std::cout << "  without a culler: largest difference from a full recompute: " << unculled
+            << std::endl;
+  VOXELGI_CHECK(unculled < 4e-3, "without a culler, an upstream change was missed");
+  renderer->GetCullers()->AddItem(culler);
 
   // Camera-following lights: the scene's lights off, a headlight on. Turns below
   // CameraLightTurn keep the voxel light; beyond it the voxels are relit and bounced.

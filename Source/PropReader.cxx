@@ -1,0 +1,282 @@
+#include "PropReader.h"
+
+#include "ImageSliceProxies.h"
+#include "PropKeys.h"
+
+#include "vtkAbstractVolumeMapper.h"
+#include "vtkActor.h"
+#include "vtkCullerCollection.h"
+#include "vtkFrustumCoverageCuller.h"
+#include "vtkGlyph3DMapper.h"
+#include "vtkImageMapper3D.h"
+#include "vtkImageSlice.h"
+#include "vtkMapper.h"
+#include "vtkMath.h"
+#include "vtkOpenGLPolyDataMapper.h"
+#include "vtkPlane.h"
+#include "vtkPlaneCollection.h"
+#include "vtkPolyData.h"
+#include "vtkProperty.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProperty.h"
+#include "vtkTexture.h"
+#include "vtkUniforms.h"
+#include "vtkVolume.h"
+
+#include <algorithm>
+#include <cstring>
+
+namespace voxelgi
+{
+
+namespace
+{
+/// Why a visible prop with bounds is not voxelized (empty: it is): its class, and the reason.
+std::string LeftOutReason(vtkProp* prop)
+{
+  if (auto* slice = vtkImageSlice::SafeDownCast(prop))
+  {
+    return ImageSliceProxies::LeftOutReason(slice);
+  }
+  vtkActor* actor = vtkActor::SafeDownCast(prop);
+  if (!actor)
+  {
+    return std::string(prop->GetClassName()) +
+      (prop->IsA("vtkVolume") ? " (a volume)" : " (not an actor)");
+  }
+  vtkMapper* mapper = actor->GetMapper();
+  // Glyph mappers draw every instance through a polydata helper: voxelized like polygons.
+  if (!vtkOpenGLPolyDataMapper::SafeDownCast(mapper) && !vtkGlyph3DMapper::SafeDownCast(mapper))
+  {
+    return std::string(prop->GetClassName()) + " with a " +
+      (mapper ? mapper->GetClassName() : "null mapper") + " (not a polydata mapper)";
+  }
+  // Imposter mappers draw points and lines as shaded spheres and cylinders: no triangles.
+  if (mapper->IsA("vtkOpenGLSphereMapper") || mapper->IsA("vtkOpenGLStickMapper"))
+  {
+    return std::string(prop->GetClassName()) + " with a " + mapper->GetClassName() +
+      " (imposter spheres or sticks, no triangles)";
+  }
+  if (actor->GetProperty()->GetRepresentation() != VTK_SURFACE)
+  {
+    return std::string(prop->GetClassName()) + " (points or wireframe representation)";
+  }
+  if (!actor->HasOpaqueGeometry())
+  {
+    return std::string(prop->GetClassName()) + " (translucent)";
+  }
+  return std::string();
+}
+
+/// Whether VTK draws lines for the prop (wireframe, edges, line cells, 3D text and axes):
+/// what a multisampled window anti-aliases most visibly.
+bool DrawsLines(vtkProp* prop)
+{
+  if (prop->IsA("vtkTextActor3D") || prop->IsA("vtkCubeAxesActor") ||
+    prop->IsA("vtkPolarAxesActor") || prop->IsA("vtkAxesActor"))
+  {
+    return true;
+  }
+  vtkActor* actor = vtkActor::SafeDownCast(prop);
+  if (!actor || !actor->GetMapper())
+  {
+    return false;
+  }
+  vtkProperty* property = actor->GetProperty();
+  auto* poly = vtkPolyData::SafeDownCast(actor->GetMapper()->GetInputDataObject(0, 0));
+  return property->GetRepresentation() == VTK_WIREFRAME || property->GetEdgeVisibility() ||
+    (poly && poly->GetNumberOfLines() > 0);
+}
+
+/// Whether VTK's culler reads the prop's bounds as they are now, and nothing else of it
+/// moves them: plain actors (not followers, which turn with the camera).
+bool BoundsFollowSignature(vtkProp* prop)
+{
+  const char* name = prop->GetClassName();
+  return std::strcmp(name, "vtkOpenGLActor") == 0 || std::strcmp(name, "vtkActor") == 0;
+}
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+/// Latest modification of an algorithm's inputs: every connection of every port (a glyph
+/// mapper's source, an image's pipeline), the data and the algorithm producing it (the first
+/// input data's own time into `firstData`, when given).
+vtkMTimeType InputsTime(vtkAlgorithm* algorithm, vtkMTimeType* firstData = nullptr)
+{
+  vtkMTimeType t = 0;
+  for (int port = 0; algorithm && port < algorithm->GetNumberOfInputPorts(); ++port)
+  {
+    for (int c = 0; c < algorithm->GetNumberOfInputConnections(port); ++c)
+    {
+      if (vtkDataObject* data = algorithm->GetInputDataObject(port, c))
+      {
+        const vtkMTimeType modified = data->GetMTime();
+        if (firstData && port == 0 && c == 0)
+        {
+          *firstData = modified;
+        }
+        t = std::max(t, modified);
+      }
+      if (vtkAlgorithm* producer = algorithm->GetInputAlgorithm(port, c))
+      {
+        t = std::max(t, producer->GetMTime());
+      }
+    }
+  }
+  return t;
+}
+
+/// What a mapper draws with beyond its own settings: the planes it clips with (moving a
+/// plane does not modify the mapper or its plane collection).
+vtkMTimeType ClippingTime(vtkAbstractMapper* mapper)
+{
+  vtkMTimeType t = 0;
+  if (vtkPlaneCollection* planes = mapper->GetClippingPlanes())
+  {
+    t = planes->GetMTime();
+    for (int i = 0; i < planes->GetNumberOfItems(); ++i)
+    {
+      t = std::max(t, planes->GetItem(i)->GetMTime());
+    }
+  }
+  return t;
+}
+
+/// The actor's textures' images and its shader uniforms, which its own time does not cover.
+vtkMTimeType MaterialTime(vtkActor* actor)
+{
+  vtkMTimeType t = 0;
+  if (vtkTexture* texture = actor->GetTexture())
+  {
+    t = std::max(t, InputsTime(texture));
+  }
+  for (const auto& named : actor->GetProperty()->GetAllTextures())
+  {
+    t = std::max(t, InputsTime(named.second));
+  }
+  if (vtkShaderProperty* shaders = actor->GetShaderProperty())
+  {
+    t = std::max({ t, shaders->GetMTime(), shaders->GetVertexCustomUniforms()->GetMTime(),
+      shaders->GetFragmentCustomUniforms()->GetMTime(),
+      shaders->GetGeometryCustomUniforms()->GetMTime() });
+  }
+  return t;
+}
+}
+
+vtkMTimeType PropReader::ActorSignature(vtkActor* actor, vtkMTimeType* inputTime)
+{
+  vtkMapper* mapper = actor->GetMapper();
+  vtkMTimeType inputModified = 0;
+  const vtkMTimeType inputs = InputsTime(mapper, &inputModified);
+  if (inputTime)
+  {
+    *inputTime = inputModified;
+  }
+  // Before the actor's own time: asking for its property and shader property creates them
+  // when it has none, which modifies the actor.
+  const vtkMTimeType material = MaterialTime(actor);
+  return std::max({ material, actor->GetMTime(), mapper->GetMTime(), inputs,
+    ClippingTime(mapper) });
+}
+
+vtkMTimeType PropReader::PropSignature(vtkProp* prop, vtkMTimeType* inputTime)
+{
+  vtkActor* actor = vtkActor::SafeDownCast(prop);
+  if (actor && actor->GetMapper())
+  {
+    return ActorSignature(actor, inputTime);
+  }
+  // Images and volumes: their mapper and its inputs.
+  vtkAbstractMapper* mapper = nullptr;
+  if (vtkImageSlice* slice = vtkImageSlice::SafeDownCast(prop))
+  {
+    mapper = slice->GetMapper();
+  }
+  else if (vtkVolume* volume = vtkVolume::SafeDownCast(prop))
+  {
+    mapper = volume->GetMapper();
+  }
+  return mapper ? std::max({ prop->GetMTime(), mapper->GetMTime(), InputsTime(mapper),
+                    ClippingTime(mapper) })
+                : prop->GetMTime();
+}
+
+vtkMTimeType PropReader::DrawnSignature(vtkProp* prop, vtkMTimeType scanned)
+{
+  vtkActor* actor = vtkActor::SafeDownCast(prop);
+  if (actor && actor->GetMapper())
+  {
+    return std::max({ scanned, actor->GetMTime(), actor->GetMapper()->GetMTime() });
+  }
+  return PropSignature(prop);
+}
+
+//------------------------------------------------------------------------------
+void PropReader::Begin(vtkRenderer* renderer, bool inRender)
+{
+  this->Next = 0;
+  this->Culled = false;
+  if (!inRender)
+  {
+    return;
+  }
+  vtkCollectionSimpleIterator it;
+  renderer->GetCullers()->InitTraversal(it);
+  while (vtkCuller* culler = renderer->GetCullers()->GetNextCuller(it))
+  {
+    this->Culled = this->Culled || culler->IsA("vtkFrustumCoverageCuller");
+  }
+}
+
+const PropReading& PropReader::Read(vtkProp* prop)
+{
+  if (this->Next == this->Readings.size())
+  {
+    this->Readings.emplace_back();
+  }
+  PropReading& reading = this->Readings[this->Next++];
+  if (this->Culled && prop->GetVisibility() && reading.Prop == prop &&
+    BoundsFollowSignature(prop))
+  {
+    // The culler updated the pipeline: an unchanged signature means unchanged bounds.
+    vtkMTimeType inputTime = 0;
+    const vtkMTimeType signature = PropSignature(prop, &inputTime);
+    if (signature == reading.Signature && inputTime == reading.InputTime)
+    {
+      return reading;
+    }
+  }
+  reading.Prop = prop;
+  ReadAll(prop, reading);
+  return reading;
+}
+
+void PropReader::ReadAll(vtkProp* prop, PropReading& reading)
+{
+  // Empty props (e.g. ParaView's selection and axes actors) are neither voxelized nor
+  // worth a warning.
+  const double* b = prop->GetVisibility() ? prop->GetBounds() : nullptr;
+  reading.HasBounds = b && vtkMath::AreBoundsInitialized(b);
+  if (reading.HasBounds)
+  {
+    std::copy(b, b + 6, reading.Bounds);
+  }
+  reading.Lines = reading.HasBounds && DrawsLines(prop);
+  reading.LeftOut = reading.HasBounds ? LeftOutReason(prop) : std::string();
+  // After what modifies the prop while it is read: the bounds (they update its pipeline),
+  // the keys (VTK modifies a prop when it first gets property keys) and whether it is
+  // opaque (asking creates a mapper's default lookup table). The signature keys the records
+  // and the traced image alike.
+  EnsurePropertyKeys(prop);
+  reading.Signature = PropSignature(prop, &reading.InputTime);
+}
+
+void PropReader::End()
+{
+  this->Readings.resize(this->Next);
+}
+
+}

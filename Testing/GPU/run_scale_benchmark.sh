@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# The scale benchmark: the scenes and sequences whose ratios to plain VTK are the goals of a
+# GPU-resident scene (docs/performance.md), at 1920x1080 in VTK's default multisampled
+# window, the pass's defaults, plain VTK's frame of the same scene in the same run, headless
+# through EGL. Each JSON lists the settings it ran with.
+#   sphere of N triangles, all moving, 128^3 and 256^3
+#   atrium (81 actors), 256^3: all moving, light moving, camera only
+#   field of 1000 actors, 128^3: all moving, camera only
+# Usage: run_scale_benchmark.sh BIN_DIR LIB_DIR OUTPUT_DIR [MACHINE] [FRAMES] [SPHERE_TRIANGLES]
+set -eu
+bin=$1; lib=$2; out=$3
+machine=${4:-h200}; frames=${5:-40}; triangles=${6:-10000000}
+mkdir -p "$out"
+export LD_PRELOAD="$lib/libVoxelGIGlewEGLShim.so"
+run() {
+  local name=$1 sequences=$2; shift 2
+  "$bin/VoxelGIBenchmark" --egl --size 1920x1080 --frames "$frames" --warmup 5 \
+    --sequences "$sequences" --json "$out/$machine-scale-$name.json" \
+    --csv "$out/$machine-scale-$name.csv" "$@" 2>&1 | grep -v -E "WARN|ERR|^\s*$|wrote"
+}
+run field1000-128 orbit,all-moving,plain --scene field --objects 999 --resolution 128
+run atrium-256 orbit,light,all-moving,plain --scene atrium --resolution 256
+for res in 128 256; do
+  run "sphere$triangles-$res" all-moving,plain --scene sphere --triangles "$triangles" --resolution "$res"
+done
