@@ -227,7 +227,7 @@ void PropReader::Begin(vtkRenderer* renderer, bool inRender)
   renderer->GetCullers()->InitTraversal(it);
   while (vtkCuller* culler = renderer->GetCullers()->GetNextCuller(it))
   {
-    this->Culled = this->Culled || culler->IsA("vtkFrustumCoverageCuller");
+    this->Culled = this->Culled || vtkFrustumCoverageCuller::SafeDownCast(culler);
   }
 }
 
