@@ -27,6 +27,7 @@
 #include <sstream>
 #include <map>
 #include <set>
+#include <unordered_map>
 
 namespace voxelgi
 {
@@ -121,7 +122,25 @@ bool SceneScan::Collect(vtkRenderer* renderer, bool inRender,
 {
   // Every visible opaque surface actor drawn by a polydata mapper, including the ones outside
   // the view frustum (they still cast and reflect light).
-  this->RecordIndex.clear();
+  // An actor's last record: scenes keep their order from frame to frame, so it is looked for
+  // at the actor's position first, and in an index of the records only when it moved.
+  std::unordered_map<vtkActor*, const ActorRecord*> index;
+  auto previous = [&](vtkActor* actor) -> const ActorRecord* {
+    const std::size_t at = records.size();
+    if (at < this->Records.size() && this->Records[at].Actor == actor)
+    {
+      return &this->Records[at];
+    }
+    if (index.empty())
+    {
+      for (const ActorRecord& record : this->Records)
+      {
+        index[record.Actor] = &record;
+      }
+    }
+    const auto found = index.find(actor);
+    return found != index.end() ? found->second : nullptr;
+  };
   vtkMath::UninitializeBounds(bounds);
   std::map<std::string, int> leftOut; // visible 3D props VTK renders without GI, by reason
   std::set<vtkProp*> slices;          // image slices voxelized through proxies
@@ -169,7 +188,7 @@ bool SceneScan::Collect(vtkRenderer* renderer, bool inRender,
       }
     }
     records.push_back(MakeRecord(
-      prop, actor, signature, reading.InputTime, this->Previous(actor, records.size()), warnings));
+      prop, actor, signature, reading.InputTime, previous(actor), warnings));
     Merge(bounds, b, records.size() == 1);
     anySpecular = anySpecular || actor->GetProperty()->GetSpecular() > 0.0;
   }
@@ -179,27 +198,6 @@ bool SceneScan::Collect(vtkRenderer* renderer, bool inRender,
   this->AnySpecular = anySpecular;
   this->AnyLines = anyLines;
   return !records.empty();
-}
-
-const ActorRecord* SceneScan::Previous(vtkActor* actor, std::size_t position)
-{
-  // Scenes keep their order from frame to frame: look where the actor was first.
-  if (position < this->Records.size() && this->Records[position].Actor == actor)
-  {
-    return &this->Records[position];
-  }
-  if (this->RecordIndex.empty())
-  {
-    for (const ActorRecord& record : this->Records)
-    {
-      if (record.Actor)
-      {
-        this->RecordIndex[record.Actor] = &record;
-      }
-    }
-  }
-  const auto found = this->RecordIndex.find(actor);
-  return found != this->RecordIndex.end() ? found->second : nullptr;
 }
 
 void SceneScan::ReportLeftOut(

@@ -23,7 +23,6 @@
 #include <map>
 #include <set>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 class vtkActor;
@@ -108,8 +107,6 @@ private:
   /// Collect the visible opaque surface actors; false when there is none.
   bool Collect(vtkRenderer* renderer, bool inRender, std::vector<ActorRecord>& records,
     double bounds[6], std::vector<std::string>& warnings);
-  /// The record of `actor` in the accepted records, looked up first at `position` (null: new).
-  const ActorRecord* Previous(vtkActor* actor, std::size_t position);
   /// Warn once about each new kind of prop left to VTK (`leftOut`: reason -> count).
   void ReportLeftOut(const std::map<std::string, int>& leftOut, std::vector<std::string>& warnings);
   /// Compare with the accepted records: full rebuild, dynamic change, or nothing.
@@ -118,10 +115,9 @@ private:
   bool Due(const Settings& settings, bool settingsChanged, bool pending);
 
   ImageSliceProxies Slices; // image slices as textured quads
-  PropReader Reader;        // what each view prop is, kept between frames
+  PropReader Reader;        // what was read of each view prop, kept between frames
   std::vector<ActorRecord> Records;
   std::vector<ActorRecord> Pending; // scanned, waiting for Accept()
-  std::unordered_map<vtkActor*, const ActorRecord*> RecordIndex; // of Records, built on need
   bool Voxelized = false;
   VoxelGrid BuiltGrid;
   double BuiltPadding = -1.0;
