@@ -1,6 +1,10 @@
 // Composite at the image's resolution, one invocation per pixel in 8x8 tiles: VTK's shaded
 // colour minus what the shadow cones found occluded, its ambient term darkened by AO (never
-// the lights' direct term or emission), plus the indirect light. Each pixel gathers the traced
+// the lights' direct term or emission), plus the indirect light. Besides the linear result,
+// it writes what Present blends into each of VTK's own samples, s * scale + add, so that
+// VTK's multisampled image keeps its coverage at edges: scale takes VTK's displayed colour to
+// the composite's direct part, add is the indirect light (scale 0 where the result replaces
+// VTK's colour: the debug views, surfaces without lights). Each pixel gathers the traced
 // samples around it, weighted by how well their surfaces match its own (position and normal),
 // so that indirect light does not bleed across depth or orientation edges: the indirect light
 // and AO with a tent two traced pixels wide on each side, which gives the four cone turns of
@@ -21,13 +25,24 @@ uniform float aoStrength;
 uniform int compositeView;         // 0 composite, 1 direct only, 2 indirect only, 3 AO only
 layout(rgba32f, binding = 0) uniform writeonly image2D compositeColor; // linear colour
 layout(rgba32f, binding = 1) uniform writeonly image2D compositeIndirect; // indirect rgb, AO
-layout(rgba8, binding = 2) uniform writeonly image2D compositeDisplay; // clamped, for Present
+layout(rgba16f, binding = 2) uniform writeonly image2D presentScale; // rgb; a: a surface
+layout(rgba16f, binding = 3) uniform writeonly image2D presentAdd;
 
-void store(ivec2 pixel, vec4 color, vec4 indirect)
+/// The linear result, and Present's blend: VTK's displayed colour (`shown`, clamped as its
+/// 8-bit image holds it) scaled to `kept`, plus `added`.
+void store(ivec2 pixel, vec4 color, vec4 indirect, vec3 shown, vec3 kept, vec3 added, bool surface)
 {
   imageStore(compositeColor, pixel, color);
   imageStore(compositeIndirect, pixel, indirect);
-  imageStore(compositeDisplay, pixel, vec4(clamp(color.rgb, 0.0, 1.0), color.a));
+  shown = clamp(shown, 0.0, 1.0);
+  kept = clamp(kept, 0.0, 1.0);
+  // Where VTK shows (almost) no light, a ratio means nothing: its samples stay and what is
+  // kept beyond them is added (other samples of the pixel may be bright: never zero them).
+  bvec3 dark = lessThan(shown, vec3(1.0 / 256.0));
+  vec3 scale = mix(min(kept / max(shown, vec3(1.0 / 256.0)), 1.0), vec3(1.0), dark);
+  vec3 more = mix(vec3(0.0), max(kept - shown, 0.0), dark);
+  imageStore(presentScale, pixel, vec4(scale, surface ? 1.0 : 0.0));
+  imageStore(presentAdd, pixel, vec4(clamp(added + more, 0.0, 1.0), 0.0));
 }
 
 void main()
@@ -44,8 +59,11 @@ void main()
   float depth = texelFetch(gbufferDepth, pixel, 0).r;
   if (depth >= 1.0)
   {
-    store(pixel, compositeView == 0 || compositeView == 1 ? color : vec4(compositeView == 3 ? vec3(1.0) : vec3(0.0), color.a),
-      vec4(0.0, 0.0, 0.0, 1.0));
+    // VTK's background as it is; the AO and indirect views show white and black there.
+    bool view = compositeView >= 2;
+    vec3 background = view ? vec3(compositeView == 3 ? 1.0 : 0.0) : color.rgb;
+    store(pixel, vec4(background, color.a), vec4(0.0, 0.0, 0.0, 1.0), vec3(1.0),
+      vec3(view ? 0.0 : 1.0), view ? background : vec3(0.0), false);
     return;
   }
   vec3 p = gbufferGridPosition(texCoord, depth);
@@ -109,29 +127,33 @@ void main()
     indirectWeightSum > 1e-6 ? indirectSum / indirectWeightSum : vec4(0.0, 0.0, 0.0, 1.0);
   vec3 shadowed = weightSum > 1e-6 ? shadowedSum / weightSum : vec3(0.0);
 
+  // What the surface keeps of VTK's colour (gbuffer.frag says how alpha reads), and the part
+  // of it AO darkens. Other mappers' pixels (alpha 0) get no traced terms.
   vec4 ambientSample = texelFetch(gbufferAmbient, pixel, 0);
-  vec3 ambient = ambientSample.a == 1.0 && !any(isnan(ambientSample.rgb))
-    ? clamp(ambientSample.rgb, vec3(0.0), color.rgb)
-    : vec3(0.0);
-  // The share of the pixel that polydata surfaces cover (below 1 on multisampled edges, where
-  // VTK's colour is already a blend with what lies behind): the traced terms count that much.
-  float coverage = clamp(ambientSample.a, 0.0, 1.0);
-  vec3 direct = max(color.rgb - ambient - coverage * shadowed, vec3(0.0)) +
+  ambientSample.rgb = any(isnan(ambientSample.rgb)) ? vec3(0.0) : max(ambientSample.rgb, 0.0);
+  float kind = floor(ambientSample.a + 0.5);
+  float coverage = kind > 0.0 ? 1.0 : 0.0;
+  vec3 own = kind >= 2.0 ? min(ambientSample.rgb, vec3(VOXELGI_HALF_MAX)) : color.rgb;
+  vec3 ambient = kind == 1.0 || kind == 2.0 ? min(ambientSample.rgb, own) : vec3(0.0);
+  vec3 direct = max(own - ambient - coverage * shadowed, vec3(0.0)) +
     ambient * mix(1.0, indirectAO.a, aoStrength);
-  vec3 result = direct + coverage * indirectAO.rgb;
+  vec3 indirect = coverage * indirectAO.rgb;
+  bool replaced = kind >= 2.0;
   if (compositeView == 1)
   {
-    result = direct;
+    indirect = vec3(0.0);
   }
-  else if (compositeView == 2)
+  else if (compositeView >= 2)
   {
-    result = indirectAO.rgb;
-  }
-  else if (compositeView == 3)
-  {
-    result = vec3(indirectAO.a);
+    direct = compositeView == 2 ? vec3(0.0) : vec3(indirectAO.a);
+    indirect = compositeView == 2 ? indirectAO.rgb : vec3(0.0);
+    replaced = true;
   }
   // Finite and within the pipeline's half-float range, whatever the lights' intensities.
-  result = (any(isnan(result)) || any(isinf(result))) ? vec3(0.0) : min(result, vec3(VOXELGI_HALF_MAX));
-  store(pixel, vec4(result, color.a), indirectAO);
+  bool finite = !any(isnan(direct + indirect)) && !any(isinf(direct + indirect));
+  direct = finite ? min(direct, vec3(VOXELGI_HALF_MAX)) : vec3(0.0);
+  indirect = finite ? min(indirect, vec3(VOXELGI_HALF_MAX)) : vec3(0.0);
+  vec3 result = min(direct + indirect, vec3(VOXELGI_HALF_MAX));
+  store(pixel, vec4(result, color.a), indirectAO, replaced ? vec3(1.0) : color.rgb,
+    replaced ? vec3(0.0) : direct, replaced ? result : indirect, true);
 }

@@ -27,11 +27,13 @@ bool Composite::Prepare(const Frame& frame, std::string& error)
   {
     this->Color = NewImageTexture(frame.Window, GL_RGBA32F, frame.Width, frame.Height);
     this->Indirect = NewImageTexture(frame.Window, GL_RGBA32F, frame.Width, frame.Height);
-    this->Display = NewImageTexture(frame.Window, GL_RGBA8, frame.Width, frame.Height);
+    this->Scale = NewImageTexture(frame.Window, GL_RGBA16F, frame.Width, frame.Height);
+    this->Add = NewImageTexture(frame.Window, GL_RGBA16F, frame.Width, frame.Height);
   }
   this->Color->Resize(frame.Width, frame.Height);
   this->Indirect->Resize(frame.Width, frame.Height);
-  this->Display->Resize(frame.Width, frame.Height);
+  this->Scale->Resize(frame.Width, frame.Height);
+  this->Add->Resize(frame.Width, frame.Height);
   return this->Program.BuildOnce(shaders::composite_comp, "composite", error);
 }
 
@@ -68,7 +70,8 @@ void Composite::Run(const Frame& frame)
     view >= DEBUG_VIEW_DIRECT ? view - DEBUG_VIEW_DIRECT + 1 : 0);
   BindImage2D(0, this->Color, GL_WRITE_ONLY, GL_RGBA32F);
   BindImage2D(1, this->Indirect, GL_WRITE_ONLY, GL_RGBA32F);
-  BindImage2D(2, this->Display, GL_WRITE_ONLY, GL_RGBA8);
+  BindImage2D(2, this->Scale, GL_WRITE_ONLY, GL_RGBA16F);
+  BindImage2D(3, this->Add, GL_WRITE_ONLY, GL_RGBA16F);
   p.DispatchImage(frame.Width, frame.Height, 8);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
     GL_TEXTURE_UPDATE_BARRIER_BIT);
@@ -101,14 +104,15 @@ bool Composite::Read(
 
 void Composite::ReleaseGraphicsResources(vtkWindow* window)
 {
-  for (vtkTextureObject* texture : { this->Color.Get(), this->Indirect.Get(), this->Display.Get() })
+  for (vtkTextureObject* texture :
+    { this->Color.Get(), this->Indirect.Get(), this->Scale.Get(), this->Add.Get() })
   {
     if (texture)
     {
       texture->ReleaseGraphicsResources(window);
     }
   }
-  this->Color = this->Indirect = this->Display = nullptr;
+  this->Color = this->Indirect = this->Scale = this->Add = nullptr;
   this->Program.Release();
 }
 

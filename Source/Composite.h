@@ -3,8 +3,8 @@
  * resolution, VTK's shading (the direct term) minus what the lights' shadows take away, its
  * ambient term darkened by AO, plus the indirect light, gathered from the traced samples of
  * the same surface around each pixel (a tent that weighs the trace's four cone turns alike;
- * the shadows bilinear), into a float image (and an indirect + AO image, and the clamped
- * RGBA8 display image that Present draws).
+ * the shadows bilinear), into a float image (and an indirect + AO image), and the blend
+ * Present applies to each of VTK's own samples: a scale and an added colour per pixel.
  */
 #ifndef VoxelGIComposite_h
 #define VoxelGIComposite_h
@@ -36,8 +36,10 @@ public:
   bool Prepare(const Frame& frame, std::string& error);
   /// Composite into the float images.
   void Run(const Frame& frame);
-  /// The last composite, clamped to RGBA8 for display.
-  vtkTextureObject* GetDisplay() const { return this->Display; }
+  /// Present's blend of VTK's image: each sample s becomes s * scale + add (rgb; the
+  /// scale's alpha is 1 where the G-buffer has a surface).
+  vtkTextureObject* GetPresentScale() const { return this->Scale; }
+  vtkTextureObject* GetPresentAdd() const { return this->Add; }
   /// Read back the last composite (0) or indirect + AO image (1) as RGBA floats.
   bool Read(vtkOpenGLRenderWindow* renWin, int image, std::vector<float>& rgba, int& w, int& h);
   void ReleaseGraphicsResources(vtkWindow* window);
@@ -48,7 +50,8 @@ private:
   ComputeProgram Program;
   vtkSmartPointer<vtkTextureObject> Color; // composited linear colour
   vtkSmartPointer<vtkTextureObject> Indirect;
-  vtkSmartPointer<vtkTextureObject> Display; // clamped RGBA8, what Present draws
+  vtkSmartPointer<vtkTextureObject> Scale;
+  vtkSmartPointer<vtkTextureObject> Add;
 };
 
 }

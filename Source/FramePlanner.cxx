@@ -15,7 +15,7 @@
 namespace voxelgi
 {
 
-bool FramePlanner::PlanVoxels(Frame& frame, bool admitted, int gbufferSamples)
+bool FramePlanner::PlanVoxels(Frame& frame, bool admitted)
 {
   // Every rank voxelizes its piece into one grid: either all run GI, or none.
   const bool all = this->Processes.BeginFrame(admitted);
@@ -50,17 +50,6 @@ bool FramePlanner::PlanVoxels(Frame& frame, bool admitted, int gbufferSamples)
   frame.Actors = &this->Scan.GetRecords();
   frame.Grid = frame.Plan.Voxels.Run ? frame.Plan.Voxels.Grid : this->Scan.GetGrid();
   frame.AnySpecular = this->Scan.GetAnySpecular();
-  const int windowSamples = frame.Window->GetMultiSamples();
-  if (windowSamples > 1 && gbufferSamples <= 1 && this->Scan.GetAnyLines())
-  {
-    this->Notices.Warning(Gate::Aliasing,
-      "The window is multisampled (" + std::to_string(windowSamples) +
-        " samples) but the GI G-buffer has one sample (GBufferSamples " +
-        std::to_string(gbufferSamples) +
-        "): lines, edges and 3D text that VTK anti-aliases are drawn aliased. SetGBufferSamples(" +
-        std::to_string(windowSamples) +
-        ") keeps them anti-aliased, at the cost of drawing the G-buffer with as many samples.");
-  }
   return ok;
 }
 

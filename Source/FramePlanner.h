@@ -31,8 +31,8 @@ public:
 
   /// The ranks' part of the plan (a collective call when distributed): whether every rank
   /// runs GI (`admitted` on this one), the scan, and what the Voxelize stage does. Fills the
-  /// frame's grid, actors and specularity; `gbufferSamples` decides the aliasing notice.
-  bool PlanVoxels(Frame& frame, bool admitted, int gbufferSamples);
+  /// frame's grid, actors and specularity.
+  bool PlanVoxels(Frame& frame, bool admitted);
   /// The plan from the pass's own voxels (`emission`: they have emissive voxels, or will):
   /// the lights, the radiance, the trace.
   bool PlanLights(Frame& frame, bool emission, vtkMTimeType settingsTime);

@@ -16,14 +16,12 @@
 #include "vtkOpenGLState.h"
 #include "vtkProperty.h"
 #include "vtkRenderPassCollection.h"
-#include "vtkRenderbuffer.h"
 #include "vtkRenderState.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkSequencePass.h"
 #include "vtkShaderProgram.h"
 #include "vtk_glew.h"
 
-#include <algorithm>
 
 namespace voxelgi
 {
@@ -118,37 +116,6 @@ bool GBufferPass::Prepare(const Frame& frame, std::string&)
   this->Material->Resize(width, height);
   this->Ambient->Resize(width, height);
   this->Depth->Resize(width, height);
-  // The window's multisampling, up to the setting and what renderbuffers allow here.
-  GLint maxSamples = 0;
-  glGetIntegerv(GL_MAX_SAMPLES, &maxSamples);
-  const int wanted = std::min(
-    { frame.Window->GetMultiSamples(), static_cast<int>(maxSamples), frame.Config.GBufferSamples });
-  const unsigned int samples = wanted > 1 ? static_cast<unsigned int>(wanted) : 0;
-  if (samples != this->Samples)
-  {
-    this->Samples = samples;
-    this->Multisampled = nullptr;
-  }
-  if (this->Samples > 0)
-  {
-    if (!this->Multisampled)
-    {
-      const unsigned int formats[5] = { GL_RGBA16F, GL_RGBA16F, GL_RGBA8, GL_RGBA16F,
-        GL_DEPTH_COMPONENT32F };
-      for (int i = 0; i < 5; ++i)
-      {
-        this->SampleBuffers[i] = vtkSmartPointer<vtkRenderbuffer>::New();
-        this->SampleBuffers[i]->SetContext(frame.Window);
-        this->SampleBuffers[i]->Create(formats[i], width, height, this->Samples);
-      }
-      this->Multisampled = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
-      this->Multisampled->SetContext(frame.Window);
-    }
-    for (auto& buffer : this->SampleBuffers)
-    {
-      buffer->Resize(width, height);
-    }
-  }
   this->LitScene = frame.LitScene;
   return true;
 }
@@ -157,8 +124,19 @@ bool GBufferPass::Prepare(const Frame& frame, std::string&)
 void GBufferPass::Run(const Frame& frame)
 {
   ScopedStage stage(*frame.Clock, stage::GBuffer);
-  // VTK's camera, lights and opaque steps (the whole delegate if it is not a
-  // vtkRenderStepsPass) into the framebuffer.
+  this->SelectOpaque(frame);
+  this->Draw(frame, this->Framebuffer);
+}
+
+int GBufferPass::RenderVTK(const Frame& frame)
+{
+  this->SelectOpaque(frame);
+  this->Draw(frame, nullptr);
+  return this->GetNumberOfRenderedProps();
+}
+
+void GBufferPass::SelectOpaque(const Frame& frame)
+{
   this->Opaque = frame.Delegate;
   if (auto* steps = vtkRenderStepsPass::SafeDownCast(frame.Delegate))
   {
@@ -172,36 +150,16 @@ void GBufferPass::Run(const Frame& frame)
     }
     this->Opaque = this->OpaqueCamera;
   }
-  vtkRenderState state(frame.Renderer);
-  state.SetPropArrayAndCount(frame.State->GetPropArray(), frame.State->GetPropArrayCount());
-  state.SetFrameBuffer(this->Target());
-  this->Render(&state);
-  if (this->Samples > 0)
-  {
-    this->Resolve();
-  }
 }
 
-void GBufferPass::Resolve()
+void GBufferPass::Draw(const Frame& frame, vtkOpenGLFramebufferObject* target)
 {
-  this->Framebuffer->SaveCurrentBindingsAndBuffers();
-  // Bind() for both targets: it also creates the framebuffer on the first frame.
-  this->Framebuffer->Bind();
-  this->AttachTextures();
-  this->Multisampled->Bind(GL_READ_FRAMEBUFFER);
-  // Blits are scissored: VTK's scissor box need not cover the whole buffer.
-  vtkOpenGLState* state = this->Framebuffer->GetContext()->GetState();
-  vtkOpenGLState::ScopedglEnableDisable scissor(state, GL_SCISSOR_TEST);
-  state->vtkglDisable(GL_SCISSOR_TEST);
-  const int w = this->Color->GetWidth(), h = this->Color->GetHeight();
-  for (unsigned int i = 0; i < 4; ++i)
-  {
-    glReadBuffer(GL_COLOR_ATTACHMENT0 + i);
-    glDrawBuffer(GL_COLOR_ATTACHMENT0 + i);
-    glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-  }
-  glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
-  this->Framebuffer->RestorePreviousBindingsAndBuffers();
+  vtkRenderState state(frame.Renderer);
+  state.SetPropArrayAndCount(frame.State->GetPropArray(), frame.State->GetPropArrayCount());
+  state.SetFrameBuffer(target ? target : frame.State->GetFrameBuffer());
+  this->IntoGBuffer = target != nullptr;
+  this->Render(&state);
+  this->IntoGBuffer = false;
 }
 
 void GBufferPass::Render(const vtkRenderState* s)
@@ -209,47 +167,32 @@ void GBufferPass::Render(const vtkRenderState* s)
   this->NumberOfRenderedProps = 0;
   GBufferShaders* shaders = GBufferShaders::Get();
   shaders->Begin(this, this->LitScene, s);
-  this->Begin();
+  if (this->IntoGBuffer)
+  {
+    this->Begin();
+  }
   if (this->Opaque)
   {
     this->Opaque->Render(s);
     this->NumberOfRenderedProps += this->Opaque->GetNumberOfRenderedProps();
   }
-  this->End();
+  if (this->IntoGBuffer)
+  {
+    this->End();
+  }
   shaders->End(s);
-}
-
-vtkOpenGLFramebufferObject* GBufferPass::Target() const
-{
-  return this->Samples > 0 ? this->Multisampled : this->Framebuffer;
-}
-
-void GBufferPass::AttachTextures()
-{
-  this->Framebuffer->AddColorAttachment(0, this->Color);
-  this->Framebuffer->AddColorAttachment(1, this->Normal);
-  this->Framebuffer->AddColorAttachment(2, this->Material);
-  this->Framebuffer->AddColorAttachment(3, this->Ambient);
-  this->Framebuffer->AddDepthAttachment(this->Depth);
 }
 
 void GBufferPass::Begin()
 {
-  vtkOpenGLFramebufferObject* target = this->Target();
+  vtkOpenGLFramebufferObject* target = this->Framebuffer;
   target->SaveCurrentBindingsAndBuffers();
   target->Bind();
-  if (this->Samples > 0)
-  {
-    for (unsigned int i = 0; i < 4; ++i)
-    {
-      target->AddColorAttachment(i, this->SampleBuffers[i]);
-    }
-    target->AddDepthAttachment(this->SampleBuffers[4]);
-  }
-  else
-  {
-    this->AttachTextures();
-  }
+  target->AddColorAttachment(0, this->Color);
+  target->AddColorAttachment(1, this->Normal);
+  target->AddColorAttachment(2, this->Material);
+  target->AddColorAttachment(3, this->Ambient);
+  target->AddDepthAttachment(this->Depth);
   target->ActivateDrawBuffers(4);
   target->StartNonOrtho(this->Color->GetWidth(), this->Color->GetHeight());
   for (unsigned int i = 0; i < 3; ++i)
@@ -276,9 +219,8 @@ void GBufferPass::End()
       glEnablei(GL_BLEND, i + 1);
     }
   }
-  vtkOpenGLFramebufferObject* target = this->Target();
-  target->UnBind();
-  target->RestorePreviousBindingsAndBuffers();
+  this->Framebuffer->UnBind();
+  this->Framebuffer->RestorePreviousBindingsAndBuffers();
 }
 
 //------------------------------------------------------------------------------
@@ -323,9 +265,13 @@ bool GBufferPass::ReplaceShaderValues(
 
 bool GBufferPass::SetParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop)
 {
-  // Polydata mappers write all attachments, other mappers only the colour.
+  // Polydata mappers write all attachments, other mappers only the colour. VTK's own
+  // framebuffer keeps its draw buffers: the data outputs go nowhere there.
   const bool polyData = vtkOpenGLPolyDataMapper::SafeDownCast(mapper) != nullptr;
-  this->Target()->ActivateDrawBuffers(polyData ? 4 : 1);
+  if (this->IntoGBuffer)
+  {
+    this->Framebuffer->ActivateDrawBuffers(polyData ? 4 : 1);
+  }
   if (polyData)
   {
     // An emitter's ambient colour is its emission, which nothing occludes. A surface VTK
@@ -338,7 +284,10 @@ bool GBufferPass::SetParameters(vtkShaderProgram* program, vtkAbstractMapper* ma
     program->SetUniformf("voxelgiOccludable", unlit || Emits(PropEmission(prop)) ? 0.0f : 1.0f);
   }
   // Before every draw: VTK's state handling may have re-enabled blending for all buffers.
-  DisableDataBlending();
+  if (this->IntoGBuffer)
+  {
+    DisableDataBlending();
+  }
   return true;
 }
 
@@ -359,20 +308,6 @@ void GBufferPass::ReleaseGraphicsResources(vtkWindow* window)
   }
   this->Framebuffer = nullptr;
   this->Color = this->Normal = this->Material = this->Ambient = this->Depth = nullptr;
-  for (auto& buffer : this->SampleBuffers)
-  {
-    if (buffer)
-    {
-      buffer->ReleaseGraphicsResources(window);
-    }
-    buffer = nullptr;
-  }
-  if (this->Multisampled)
-  {
-    this->Multisampled->ReleaseGraphicsResources(window);
-  }
-  this->Multisampled = nullptr;
-  this->Samples = 0;
 }
 
 }

@@ -1,13 +1,13 @@
 /**
  * GBuffer stage: an internal render pass in which VTK renders the frame's camera, lights and
- * opaque geometry (its own shading kept in attachment 0) into the pass's framebuffer, while
- * fragment code it injects into the polydata mappers (gbuffer.frag) adds the view-space
- * normal and specular power (attachment 1) and the albedo and specular intensity
- * (attachment 2); depth goes to a float texture (the vtkSSAOPass pattern). A delegate that is
- * not a vtkRenderStepsPass renders whole into attachment 0. In a multisampled window VTK
- * draws into multisampled renderbuffers with the window's sample count, resolved into the
- * textures (colours averaged, so edges and lines keep VTK's anti-aliasing; depth from one
- * sample; the ambient attachment's alpha becomes the pixel's coverage by polydata surfaces).
+ * opaque geometry (its own shading kept in attachment 0) into the pass's framebuffer at one
+ * sample per pixel, while fragment code it injects into the polydata mappers (gbuffer.frag)
+ * adds the view-space normal and specular power (attachment 1), the albedo and specular
+ * intensity (attachment 2) and the ambient term (attachment 3); depth goes to a float texture
+ * (the vtkSSAOPass pattern). A delegate that is not a vtkRenderStepsPass renders whole into
+ * attachment 0. The same pass draws VTK's own image of those steps into the frame's
+ * framebuffer (RenderVTK), with the window's multisampling, through the same shaders, so that
+ * a mapper keeps one shader program for both draws.
  */
 #ifndef VoxelGIGBufferPass_h
 #define VoxelGIGBufferPass_h
@@ -22,7 +22,6 @@
 class vtkAbstractMapper;
 class vtkCameraPass;
 class vtkOpenGLFramebufferObject;
-class vtkRenderbuffer;
 class vtkRenderPassCollection;
 class vtkProp;
 class vtkSequencePass;
@@ -42,6 +41,8 @@ public:
   bool Prepare(const Frame& frame, std::string& error);
   /// Render the frame's opaque geometry into the G-buffer.
   void Run(const Frame& frame);
+  /// Render the same steps as VTK would into the frame's framebuffer; returns the props drawn.
+  int RenderVTK(const Frame& frame);
   /// Render the state's props through the delegate's opaque steps (Run sets up the state).
   void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* window) override;
@@ -67,15 +68,14 @@ private:
   GBufferPass(const GBufferPass&) = delete;
   void operator=(const GBufferPass&) = delete;
 
-  /// Bind the framebuffer VTK draws into (saving the current bindings) / restore.
+  /// What Render() draws: VTK's camera, lights and opaque steps (or the whole delegate).
+  void SelectOpaque(const Frame& frame);
+  /// Draw the state's props through the opaque steps into `target` (null: the state's own
+  /// framebuffer, as VTK draws).
+  void Draw(const Frame& frame, vtkOpenGLFramebufferObject* target);
+  /// Bind the G-buffer's framebuffer (saving the current bindings) / restore.
   void Begin();
   void End();
-  /// Average the multisampled attachments into the textures.
-  void Resolve();
-  /// The framebuffer VTK draws into: the multisampled one, or the textures' own.
-  vtkOpenGLFramebufferObject* Target() const;
-  /// Attach the textures to the textures' framebuffer (bound).
-  void AttachTextures();
   static void DisableDataBlending();
 
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
@@ -84,10 +84,7 @@ private:
   vtkSmartPointer<vtkTextureObject> Material;
   vtkSmartPointer<vtkTextureObject> Ambient;
   vtkSmartPointer<vtkTextureObject> Depth;
-  // With multisampling: the framebuffer VTK draws into, and its attachments.
-  unsigned int Samples = 0;
-  vtkSmartPointer<vtkOpenGLFramebufferObject> Multisampled;
-  vtkSmartPointer<vtkRenderbuffer> SampleBuffers[5]; // 4 colours, depth
+  bool IntoGBuffer = false; // Render() draws into the G-buffer, else into VTK's framebuffer
   bool BlendWasEnabled[3] = { false, false, false };
   bool LitScene = true;
   vtkRenderPass* Opaque = nullptr; // what Render() runs this frame

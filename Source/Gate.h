@@ -53,7 +53,6 @@ public:
     SharedPass,
     Combination,
     Unlit,
-    Aliasing,
     Source,
     OtherRank,
     NoticeCount

@@ -7,10 +7,9 @@
 namespace voxelgi
 {
 
-bool ImageStages::Run(const Frame& frame, LightBlock& lights, VoxelGridBlock& grid,
-  std::string& error, int& renderedProps)
+bool ImageStages::Run(
+  const Frame& frame, LightBlock& lights, VoxelGridBlock& grid, std::string& error)
 {
-  renderedProps = 0;
   const bool voxelView = frame.Plan.VoxelView;
   const bool ok = voxelView ? this->Debug.Prepare(frame, error)
                             : this->GBuffer->Prepare(frame, error) &&
@@ -26,7 +25,6 @@ bool ImageStages::Run(const Frame& frame, LightBlock& lights, VoxelGridBlock& gr
     return true;
   }
   this->GBuffer->Run(frame);
-  renderedProps = this->GBuffer->GetNumberOfRenderedProps();
   // VTK's raster work came in between: bind the blocks again before the dispatches.
   lights.Bind();
   grid.Bind(frame.Grid);

@@ -33,10 +33,8 @@ struct ImageStages
 
   /// GBuffer, ConeTrace and Composite (a voxel debug view: DebugView), and Present's
   /// program; false with `error` when one cannot be prepared. The `lights` and `grid`
-  /// blocks are bound again after VTK's raster work. `renderedProps`: the props the G-buffer
-  /// drew.
-  bool Run(const Frame& frame, LightBlock& lights, VoxelGridBlock& grid, std::string& error,
-    int& renderedProps);
+  /// blocks are bound again after VTK's raster work.
+  bool Run(const Frame& frame, LightBlock& lights, VoxelGridBlock& grid, std::string& error);
   void ReleaseGraphicsResources(vtkWindow* window);
 };
 

@@ -7,7 +7,9 @@
 #include "VoxelGIShaders.h"
 #include "StageIds.h"
 
+#include "vtkOpenGLFXAAFilter.h"
 #include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderer.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtkRenderStepsPass.h"
@@ -19,7 +21,23 @@
 namespace voxelgi
 {
 
-Present::Present(const Composite& composite, const GBufferPass& gbuffer, const DebugView& debug)
+namespace
+{
+/// present.frag in GLSL 3.30 (VTK declares 1.50), whose output index qualifier gives the
+/// second colour of dual-source blending (Mesa offers its extension to 1.50 only in
+/// compatibility contexts).
+const char* PresentSource()
+{
+  static const std::string source = [] {
+    std::string text = shaders::present_frag;
+    vtkShaderProgram::Substitute(text, "//VTK::System::Dec", "#version 330 core");
+    return text;
+  }();
+  return source.c_str();
+}
+}
+
+Present::Present(const Composite& composite, GBufferPass& gbuffer, const DebugView& debug)
   : Compositor(composite)
   , GBuffer(gbuffer)
   , Debug(debug)
@@ -30,7 +48,7 @@ Present::~Present() = default;
 
 bool Present::Prepare(const Frame& frame, std::string& error)
 {
-  if (!ReadyQuad(this->Quad, frame.Window, shaders::present_frag))
+  if (!ReadyQuad(this->Quad, frame.Window, PresentSource()))
   {
     error = "could not build the present program";
     return false;
@@ -40,50 +58,57 @@ bool Present::Prepare(const Frame& frame, std::string& error)
 
 void Present::Run(const Frame& frame)
 {
-  this->RenderedProps = 0;
   if (frame.Plan.VoxelView)
   {
     ScopedStage stage(*frame.Clock, stage::Present);
-    this->Draw(frame, this->Debug.GetImage(), nullptr);
+    this->Draw(frame, nullptr, this->Debug.GetImage());
+    this->RenderedProps = 0;
     return;
   }
+  this->RenderedProps = this->GBuffer.RenderVTK(frame);
   {
     ScopedStage stage(*frame.Clock, stage::Present);
-    this->Draw(frame, this->Compositor.GetDisplay(), this->GBuffer.GetDepth());
+    this->Draw(frame, this->Compositor.GetPresentScale(), this->Compositor.GetPresentAdd());
   }
-  this->RenderedProps = this->RenderRemainingSteps(frame);
+  this->RenderedProps += this->RenderRemainingSteps(frame);
 }
 
-void Present::Draw(const Frame& frame, vtkTextureObject* image, vtkTextureObject* depth)
+void Present::Draw(const Frame& frame, vtkTextureObject* scale, vtkTextureObject* add)
 {
-  vtkShaderProgram* program = ReadyQuad(this->Quad, frame.Window, shaders::present_frag);
-  if (!program || !image)
+  vtkShaderProgram* program = ReadyQuad(this->Quad, frame.Window, PresentSource());
+  vtkTextureObject* depth = scale ? this->GBuffer.GetDepth() : nullptr;
+  if (!program || !add || (scale && !depth))
   {
     return;
   }
-  // Without a depth image, depth writes are masked: the shader's depth output is discarded.
-  ScopedTextures inputs({ image, depth });
+  ScopedTextures inputs({ add, scale, depth });
   if (!(inputs.Complete()))
   {
     return;
   }
-  program->SetUniformi("compositeColor", image->GetTextureUnit());
-  program->SetUniformi("gbufferDepth", (depth ? depth : image)->GetTextureUnit());
+  program->SetUniformi("presentAdd", add->GetTextureUnit());
+  program->SetUniformi("presentScale", (scale ? scale : add)->GetTextureUnit());
+  program->SetUniformi("gbufferDepth", (depth ? depth : add)->GetTextureUnit());
+  program->SetUniformi("absolute", scale ? 0 : 1);
   vtkOpenGLState* ostate = frame.Window->GetState();
   vtkOpenGLState::ScopedglViewport viewport(ostate);
   vtkOpenGLState::ScopedglScissor scissor(ostate);
   vtkOpenGLState::ScopedglEnableDisable scissorTest(ostate, GL_SCISSOR_TEST);
   vtkOpenGLState::ScopedglEnableDisable depthTest(ostate, GL_DEPTH_TEST);
   vtkOpenGLState::ScopedglEnableDisable blend(ostate, GL_BLEND);
+  vtkOpenGLState::ScopedglBlendFuncSeparate blendFunc(ostate);
   vtkOpenGLState::ScopedglDepthFunc depthFunc(ostate);
   vtkOpenGLState::ScopedglDepthMask depthMask(ostate);
   ostate->vtkglEnable(GL_SCISSOR_TEST);
   ostate->vtkglViewport(frame.X, frame.Y, frame.Width, frame.Height);
   ostate->vtkglScissor(frame.X, frame.Y, frame.Width, frame.Height);
-  ostate->vtkglDisable(GL_BLEND);
+  ostate->vtkglEnable(GL_BLEND);
+  ostate->vtkglBlendEquation(GL_FUNC_ADD);
+  // Each sample: add + scale * sample (alpha: 0 + 1 * alpha).
+  ostate->vtkglBlendFuncSeparate(GL_ONE, GL_SRC1_COLOR, GL_ONE, GL_SRC1_ALPHA);
   ostate->vtkglEnable(GL_DEPTH_TEST);
-  ostate->vtkglDepthFunc(GL_ALWAYS);
-  ostate->vtkglDepthMask(depth ? GL_TRUE : GL_FALSE);
+  ostate->vtkglDepthFunc(GL_GEQUAL);
+  ostate->vtkglDepthMask(GL_FALSE);
   this->Quad->Render();
 }
 
@@ -108,6 +133,20 @@ int Present::RenderRemainingSteps(const Frame& frame)
     renderer->DeviceRenderTranslucentPolygonalGeometry();
     rendered += renderer->GetNumberOfPropsRendered() - before;
   }
+  // VTK applies FXAA here (before volumes and overlays) only when a renderer has no pass.
+  auto* openGLRenderer = vtkOpenGLRenderer::SafeDownCast(renderer);
+  if (renderer->GetUseFXAA() && openGLRenderer)
+  {
+    if (!this->FXAA)
+    {
+      this->FXAA = vtkSmartPointer<vtkOpenGLFXAAFilter>::New();
+    }
+    if (renderer->GetFXAAOptions())
+    {
+      this->FXAA->UpdateConfiguration(renderer->GetFXAAOptions());
+    }
+    this->FXAA->Execute(openGLRenderer);
+  }
   for (vtkRenderPass* pass :
     { steps->GetVolumetricPass(), steps->GetOverlayPass(), steps->GetPostProcessPass() })
   {
@@ -126,6 +165,11 @@ void Present::ReleaseGraphicsResources(vtkWindow* window)
   {
     this->Quad->ReleaseGraphicsResources(window);
     this->Quad.reset();
+  }
+  if (this->FXAA)
+  {
+    this->FXAA->ReleaseGraphicsResources();
+    this->FXAA = nullptr;
   }
 }
 

@@ -1,18 +1,23 @@
 /**
- * Present stage (present.frag): draws an RGBA8 image (the composite with the G-buffer's depth,
- * or, in a voxel debug view, the debug image over VTK's image) into the currently bound
- * framebuffer at the frame's viewport, so that VTK's translucent, volume and overlay steps
- * that follow depth-test against the scene. The one full-screen fragment pass of the pipeline: the framebuffer (and its
- * depth) may be VTK's, ParaView's or a Qt widget's. Then VTK's own remaining steps draw as VTK
- * would draw them.
+ * Present stage (present.frag): VTK draws its camera, lights and opaque steps into its own
+ * framebuffer as it would without the pass (its multisampling, depth and look kept, through
+ * the G-buffer's shaders), then the composite is blended into each of its samples (s * scale +
+ * add, depth-tested so that edges keep VTK's coverage), or, in a voxel debug view, the debug
+ * image is drawn over VTK's image. The one full-screen fragment pass of the pipeline: the
+ * framebuffer may be VTK's, ParaView's or a Qt widget's. Then VTK's own remaining steps draw
+ * as VTK would draw them, with the renderer's FXAA (vtkRenderer::UseFXAA) before volumes and
+ * overlays, where VTK applies it.
  */
 #ifndef VoxelGIPresent_h
 #define VoxelGIPresent_h
+
+#include "vtkSmartPointer.h" // for vtkSmartPointer
 
 #include <memory>
 
 #include <string>
 
+class vtkOpenGLFXAAFilter;
 class vtkOpenGLQuadHelper;
 class vtkTextureObject;
 class vtkWindow;
@@ -27,27 +32,30 @@ class GBufferPass;
 class Present
 {
 public:
-  Present(const Composite& composite, const GBufferPass& gbuffer, const DebugView& debug);
+  Present(const Composite& composite, GBufferPass& gbuffer, const DebugView& debug);
   ~Present();
 
   bool Prepare(const Frame& frame, std::string& error);
-  /// Draw the frame's image. After the composite, the steps of a vtkRenderStepsPass
-  /// delegate that follow its opaque one (translucent, volumetric, overlay, post-process)
-  /// draw, depth-tested against the scene (not timed: plain VTK draws them too).
+  /// Draw the frame's image: VTK's opaque steps (not timed: plain VTK draws them too), the
+  /// composite blended in, then the steps of a vtkRenderStepsPass delegate that follow its
+  /// opaque one (translucent, volumetric, overlay, post-process; not timed either). A voxel
+  /// debug view: the debug image over VTK's image (drawn by the pass).
   void Run(const Frame& frame);
-  /// The number of props VTK's remaining steps rendered in the last Run.
+  /// The number of props VTK's steps rendered in the last Run.
   int GetNumberOfRenderedProps() const { return this->RenderedProps; }
   void ReleaseGraphicsResources(vtkWindow* window);
 
 private:
-  /// Draw `image`; write `depth` (may be null: the framebuffer's depth is kept).
-  void Draw(const Frame& frame, vtkTextureObject* image, vtkTextureObject* depth);
+  /// Blend `scale` and `add` (with the G-buffer's depth) into the framebuffer, or draw `add`
+  /// as it is when `scale` is null.
+  void Draw(const Frame& frame, vtkTextureObject* scale, vtkTextureObject* add);
   int RenderRemainingSteps(const Frame& frame);
 
   const Composite& Compositor;
-  const GBufferPass& GBuffer;
+  GBufferPass& GBuffer;
   const DebugView& Debug;
   std::unique_ptr<vtkOpenGLQuadHelper> Quad;
+  vtkSmartPointer<vtkOpenGLFXAAFilter> FXAA;
   int RenderedProps = 0;
 };
 

@@ -296,7 +296,7 @@ voxelgi::FramePlan& vtkVoxelGIPass::PlanVoxels(vtkRenderer* renderer, const vtkR
   frame.Plan.GI = admitted && in.Gate.ViewportFits(frame.Width, frame.Height);
   if (!this->VoxelSource)
   {
-    frame.Plan.GI = in.Planner.PlanVoxels(frame, frame.Plan.GI, this->GBufferSamples);
+    frame.Plan.GI = in.Planner.PlanVoxels(frame, frame.Plan.GI);
   }
   return frame.Plan;
 }
@@ -375,13 +375,11 @@ bool vtkVoxelGIPass::Trace()
     return true;
   }
   std::string error;
-  int rendered = 0;
-  if (!in.Images.Run(frame, in.Planner.Lights, in.Voxels.GridBlock, error, rendered))
+  if (!in.Images.Run(frame, in.Planner.Lights, in.Voxels.GridBlock, error))
   {
     this->Refuse(error);
     return false;
   }
-  this->NumberOfRenderedProps += rendered;
   return true;
 }
 
