@@ -3,6 +3,7 @@
 #include "Composite.h"
 #include "DebugView.h"
 #include "Frame.h"
+#include "FramePlan.h"
 #include "GBufferPass.h"
 #include "VoxelGIShaders.h"
 #include "StageIds.h"
@@ -65,12 +66,28 @@ void Present::Run(const Frame& frame)
     this->RenderedProps = 0;
     return;
   }
-  this->RenderedProps = this->GBuffer.RenderVTK(frame);
+  const bool unchanged = frame.Plan.Trace == TraceWork::Present;
+  if (unchanged && this->Unchanged.Holds(frame))
   {
     ScopedStage stage(*frame.Clock, stage::Present);
-    this->Draw(frame, this->Compositor.GetPresentScale(), this->Compositor.GetPresentAdd());
+    this->Unchanged.Restore(frame);
   }
-  this->RenderedProps += this->RenderRemainingSteps(frame);
+  else
+  {
+    this->OpaqueProps = this->GBuffer.RenderVTK(frame);
+    ScopedStage stage(*frame.Clock, stage::Present);
+    this->Draw(frame, this->Compositor.GetPresentScale(), this->Compositor.GetPresentAdd());
+    if (unchanged)
+    {
+      this->Unchanged.Store(frame);
+    }
+    else
+    {
+      this->Unchanged.Forget();
+    }
+  }
+  // A copied image counts the props that drew it.
+  this->RenderedProps = this->OpaqueProps + this->RenderRemainingSteps(frame);
 }
 
 void Present::Draw(const Frame& frame, vtkTextureObject* scale, vtkTextureObject* add)
@@ -166,6 +183,7 @@ void Present::ReleaseGraphicsResources(vtkWindow* window)
     this->Quad->ReleaseGraphicsResources(window);
     this->Quad.reset();
   }
+  this->Unchanged.ReleaseGraphicsResources(window);
   if (this->FXAA)
   {
     this->FXAA->ReleaseGraphicsResources();

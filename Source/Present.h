@@ -3,13 +3,16 @@
  * framebuffer as it would without the pass (its multisampling, depth and look kept, through
  * the G-buffer's shaders), then the composite is blended into each of its samples (s * scale +
  * add, depth-tested so that edges keep VTK's coverage), or, in a voxel debug view, the debug
- * image is drawn over VTK's image. The one full-screen fragment pass of the pipeline: the
+ * image is drawn over VTK's image. A frame that shows the last image again copies it back
+ * (FrameCopy) where the framebuffer allows. The one full-screen fragment pass of the pipeline: the
  * framebuffer may be VTK's, ParaView's or a Qt widget's. Then VTK's own remaining steps draw
  * as VTK would draw them, with the renderer's FXAA (vtkRenderer::UseFXAA) before volumes and
  * overlays, where VTK applies it.
  */
 #ifndef VoxelGIPresent_h
 #define VoxelGIPresent_h
+
+#include "FrameCopy.h"
 
 #include "vtkSmartPointer.h" // for vtkSmartPointer
 
@@ -55,8 +58,10 @@ private:
   GBufferPass& GBuffer;
   const DebugView& Debug;
   std::unique_ptr<vtkOpenGLQuadHelper> Quad;
+  FrameCopy Unchanged; // the last presented image, for frames that show it again
   vtkSmartPointer<vtkOpenGLFXAAFilter> FXAA;
   int RenderedProps = 0;
+  int OpaqueProps = 0; // drawn by VTK's opaque steps the last time they drew
 };
 
 }

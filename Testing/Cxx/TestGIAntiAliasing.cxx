@@ -7,6 +7,8 @@
 // than 24 levels in a channel; at 80 % of them at least, GI's 8 samples must change GI's
 // one-sample image the same way by at least 40 % as much; then the image is compared with
 // its baseline.
+// Case "unchanged": frames that show the same image again copy the last one back: the
+// second unchanged frame draws no mapper, and its image equals the one VTK and the blend drew.
 // Case "fxaa": a window without multisampling, the renderer's FXAA on: with every GI term off
 // the image equals plain VTK's FXAA image within 2 levels; at the defaults GI runs and FXAA
 // more than doubles the soft edge pixels of the window without it (pixels whose 3x3
@@ -17,13 +19,17 @@
 #include "vtkVoxelGIScenes.h"
 
 #include "vtkActor.h"
+#include "vtkActorCollection.h"
+#include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
+#include "vtkCommand.h"
 #include "vtkConeSource.h"
 #include "vtkCubeAxesActor.h"
 #include "vtkGlyph3D.h"
 #include "vtkLight.h"
 #include "vtkLineSource.h"
 #include "vtkNew.h"
+#include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -224,6 +230,39 @@ int TestGIAntiAliasing(int argc, char* argv[])
               << " with FXAA and GI" << std::endl;
     VOXELGI_CHECK(smoothed > 2 * aliased, "FXAA did not smooth the GI image's edges");
     return voxelgi_test::ImageMatches(argc, argv, window);
+  }
+
+  if (which == "unchanged")
+  {
+    int draws = 0;
+    vtkNew<vtkCallbackCommand> count;
+    count->SetClientData(&draws);
+    count->SetCallback([](vtkObject*, unsigned long, void* client, void*) { ++*static_cast<int*>(client); });
+    vtkActor* text = vtkActor::SafeDownCast(renderer->GetActors()->GetItemAsObject(2));
+    VOXELGI_CHECK(text && text->GetMapper(), "no text actor");
+    text->GetMapper()->AddObserver(vtkCommand::StartEvent, count);
+    int drawn[3];
+    vtkSmartPointer<vtkUnsignedCharArray> images[3];
+    for (int frame = 0; frame < 3; ++frame)
+    {
+      draws = 0;
+      window->Render();
+      drawn[frame] = draws;
+      images[frame] = Pixels(window);
+    }
+    std::cout << "text mapper draws: traced frame " << drawn[0] << ", first unchanged " << drawn[1]
+              << ", second unchanged " << drawn[2] << std::endl;
+    VOXELGI_CHECK(gi->GetGIActive(), "GI did not run");
+    VOXELGI_CHECK(drawn[0] > 0 && drawn[1] > 0, "the mapper drew nothing");
+    VOXELGI_CHECK(drawn[2] == 0, "the unchanged frame drew again instead of copying");
+    const int off = LargestDifference(images[1], images[2]);
+    std::cout << "copied image: largest difference " << off << " levels" << std::endl;
+    VOXELGI_CHECK(off == 0, "the copied image differs from the drawn one");
+    renderer->GetActiveCamera()->Azimuth(5.0);
+    draws = 0;
+    window->Render();
+    VOXELGI_CHECK(draws > 0, "a camera move did not draw");
+    return EXIT_SUCCESS;
   }
 
   view.RenderWithoutGI();
