@@ -12,6 +12,7 @@
 #include "vtkRenderer.h"
 #include "vtkTexture.h"
 
+#include <iterator>
 #include <unordered_set>
 
 namespace voxelgi
@@ -117,26 +118,67 @@ int MapperCopies::Draw(vtkActor* actor, vtkRenderer* renderer)
     return 0;
   }
   vtkMapper* mapper = this->CopyOf(actor);
+  vtkActor* drawing = this->Drawing(this->Copies[actor], actor);
   // What vtkActor::RenderOpaqueGeometry does, with the copy in place of the actor's mapper:
   // the property and the textures are the actor's own.
-  vtkProperty* property = actor->GetProperty();
-  property->Render(actor, renderer);
-  if (vtkProperty* backface = actor->GetBackfaceProperty())
+  vtkProperty* property = drawing->GetProperty();
+  property->Render(drawing, renderer);
+  if (vtkProperty* backface = drawing->GetBackfaceProperty())
   {
-    backface->BackfaceRender(actor, renderer);
+    backface->BackfaceRender(drawing, renderer);
   }
-  vtkTexture* texture = actor->GetTexture();
+  vtkTexture* texture = drawing->GetTexture();
   if (texture)
   {
     texture->Render(renderer);
   }
-  actor->Render(renderer, mapper);
-  property->PostRender(actor, renderer);
+  drawing->Render(renderer, mapper);
+  property->PostRender(drawing, renderer);
   if (texture)
   {
     texture->PostRender(renderer);
   }
   return 1;
+}
+
+vtkActor* MapperCopies::Drawing(Copy& copy, vtkActor* actor)
+{
+  if (actor->IsA("vtkOpenGLActor"))
+  {
+    return actor;
+  }
+  if (!copy.StandIn)
+  {
+    copy.StandIn = vtkSmartPointer<vtkActor>::New(); // VTK's factory: an OpenGL actor
+    this->StandIns[copy.StandIn] = actor;
+  }
+  vtkActor* standIn = copy.StandIn;
+  // The same objects each frame: nothing is modified unless the actor's are.
+  standIn->SetUserMatrix(actor->GetMatrix());
+  standIn->SetProperty(actor->GetProperty());
+  standIn->SetBackfaceProperty(actor->GetBackfaceProperty());
+  standIn->SetTexture(actor->GetTexture());
+  standIn->SetPropertyKeys(actor->GetPropertyKeys()); // the stage's render-pass keys
+  return standIn;
+}
+
+vtkProp* MapperCopies::Original(vtkProp* drawn) const
+{
+  const auto found = this->StandIns.find(drawn);
+  return found != this->StandIns.end() ? found->second : drawn;
+}
+
+void MapperCopies::Erase(std::unordered_map<vtkActor*, Copy>::iterator it, vtkWindow* window)
+{
+  if (it->second.Mapper)
+  {
+    it->second.Mapper->ReleaseGraphicsResources(window);
+  }
+  if (it->second.StandIn)
+  {
+    this->StandIns.erase(it->second.StandIn);
+  }
+  this->Copies.erase(it);
 }
 
 //------------------------------------------------------------------------------
@@ -151,11 +193,9 @@ void MapperCopies::Retain(const std::vector<ActorRecord>& records, vtkWindow* wi
   {
     if (!it->second.Actor || !kept.count(it->first))
     {
-      if (it->second.Mapper)
-      {
-        it->second.Mapper->ReleaseGraphicsResources(window);
-      }
-      it = this->Copies.erase(it);
+      auto next = std::next(it);
+      this->Erase(it, window);
+      it = next;
     }
     else
     {
@@ -174,6 +214,7 @@ void MapperCopies::ReleaseGraphicsResources(vtkWindow* window)
     }
   }
   this->Copies.clear();
+  this->StandIns.clear();
 }
 
 }

@@ -14,6 +14,7 @@
 
 class vtkActor;
 class vtkMapper;
+class vtkProp;
 class vtkRenderer;
 class vtkWindow;
 
@@ -30,6 +31,11 @@ struct ActorRecord;
  * connection, same colouring settings, drawn with the user's actor: its property, textures
  * and matrix) only ever draws for one stage, so neither it nor the user's mapper rebuilds;
  * vertex buffers of the same arrays are shared through the window's VBO cache.
+ *
+ * An actor class that does not draw a mapper it is handed (vtkFollower, vtkLODActor,
+ * vtkQuadricLODActor: they draw through an internal OpenGL actor, and vtkActor's own
+ * Render(renderer, mapper) draws nothing) is drawn through a stand-in OpenGL actor with its
+ * matrix (a follower's faces its camera), property, textures and property keys.
  */
 class MapperCopies
 {
@@ -42,6 +48,9 @@ public:
   /// Draw `actor` as its RenderOpaqueGeometry() would, with the copy of its mapper, into
   /// `renderer`. Returns 1 when something was drawn.
   int Draw(vtkActor* actor, vtkRenderer* renderer);
+  /// The actor that `drawn` (a prop a copy was drawn with) stands for: itself or the actor
+  /// whose stand-in it is.
+  vtkProp* Original(vtkProp* drawn) const;
   /// Free the copies of actors that are not in `records` (the context current).
   void Retain(const std::vector<ActorRecord>& records, vtkWindow* window);
   /// Free every copy's GL objects and the copies (the context current).
@@ -54,11 +63,16 @@ private:
     vtkWeakPointer<vtkMapper> Source;
     vtkSmartPointer<vtkMapper> Mapper;
     vtkMTimeType Synced = 0;
+    vtkSmartPointer<vtkActor> StandIn; // for actors that draw through an internal actor
   };
   /// The up-to-date copy of the actor's mapper.
   vtkMapper* CopyOf(vtkActor* actor);
+  /// The actor that draws the copy: `actor` itself, or its stand-in, brought up to date.
+  vtkActor* Drawing(Copy& copy, vtkActor* actor);
+  void Erase(std::unordered_map<vtkActor*, Copy>::iterator it, vtkWindow* window);
 
   std::unordered_map<vtkActor*, Copy> Copies;
+  std::unordered_map<vtkProp*, vtkActor*> StandIns; // stand-in -> the actor it stands for
 };
 
 }

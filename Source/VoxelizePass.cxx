@@ -369,6 +369,10 @@ bool VoxelizePass::PostReplaceShaderValues(
   static const std::regex perVertex(R"((\w+)\[i\]((?:\.\w+|\[\w+\])*))");
   geometry = std::regex_replace(geometry, perVertex,
     "(voxelBary.x * $1[0]$2 + voxelBary.y * $1[1]$2 + voxelBary.z * $1[2]$2)");
+  // Lines drawn as tubes (vtkProperty::RenderLinesAsTubes): VTK adds code that reads its own
+  // line geometry shader's variables. Lines have no area to voxelize: the assignments go.
+  static const std::regex tubeBasis(R"(tubeBasis\d\s*=[^;]*;)");
+  geometry = std::regex_replace(geometry, tubeBasis, "");
 
   vtkShaderProgram::Substitute(fragment, "//VTK::System::Dec",
     std::string("//VTK::System::Dec\n") + shaders::voxelize_extensions_glsl + this->Defines());
@@ -389,7 +393,7 @@ bool VoxelizePass::SetShaderParameters(
   vtkShaderProgram* program, vtkAbstractMapper*, vtkProp* prop, vtkOpenGLVertexArrayObject*)
 {
   float e[3] = { 0.f, 0.f, 0.f };
-  auto found = this->PropEmissions.find(prop);
+  auto found = this->PropEmissions.find(this->Copies.Original(prop));
   if (found != this->PropEmissions.end())
   {
     for (int c = 0; c < 3; ++c)

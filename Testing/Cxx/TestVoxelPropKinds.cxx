@@ -1,0 +1,109 @@
+// Actor classes that draw through an internal actor are voxelized with their colour and
+// transform: a red sphere (radius 0.3) moved to (1, 0.5, 0) by its actor's position, over a
+// grey floor, as a vtkFollower ("follower"), a vtkLODActor ("lod") or a vtkQuadricLODActor
+// ("quadric", in a window with an interactor, which VTK's class needs); case "tubes": the
+// same sphere as a plain actor next to a line drawn as a tube (RenderLinesAsTubes), whose
+// voxelization shader once failed to compile and crashed. The voxel at the sphere's side
+// holds its colour; the voxel where the sphere would be without its position is empty.
+#include "VoxelGITestUtilities.h"
+#include "vtkVoxelGIPass.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkDataArray.h"
+#include "vtkFollower.h"
+#include "vtkImageData.h"
+#include "vtkLODActor.h"
+#include "vtkLight.h"
+#include "vtkLineSource.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkQuadricLODActor.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderWindowInteractor.h"
+#include "vtkRenderer.h"
+#include "vtkSphereSource.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <string>
+
+int TestVoxelPropKinds(int argc, char* argv[])
+{
+  const std::string which = argc > 1 ? argv[1] : "follower";
+  vtkNew<vtkRenderer> renderer;
+  using glm::dvec3;
+  voxelgi_test::AddQuad(renderer, dvec3(-2, 0, -2), dvec3(-2, 0, 2), dvec3(2, 0, -2), 0.5, 0.5, 0.5);
+  vtkNew<vtkSphereSource> ball;
+  ball->SetRadius(0.3);
+  ball->SetThetaResolution(24);
+  ball->SetPhiResolution(24);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(ball->GetOutputPort());
+  vtkSmartPointer<vtkActor> actor;
+  if (which == "follower")
+  {
+    auto follower = vtkSmartPointer<vtkFollower>::New();
+    follower->SetCamera(renderer->GetActiveCamera());
+    actor = follower;
+  }
+  else if (which == "lod")
+  {
+    actor = vtkSmartPointer<vtkLODActor>::New();
+  }
+  else if (which == "quadric")
+  {
+    actor = vtkSmartPointer<vtkQuadricLODActor>::New();
+  }
+  else
+  {
+    actor = vtkSmartPointer<vtkActor>::New();
+    vtkNew<vtkLineSource> line;
+    line->SetPoint1(-1.5, 0.4, -1.0);
+    line->SetPoint2(1.5, 0.4, -1.0);
+    line->SetResolution(8);
+    vtkNew<vtkPolyDataMapper> lineMapper;
+    lineMapper->SetInputConnection(line->GetOutputPort());
+    vtkNew<vtkActor> tube;
+    tube->SetMapper(lineMapper);
+    tube->GetProperty()->SetRenderLinesAsTubes(true);
+    tube->GetProperty()->SetLineWidth(6.0);
+    tube->GetProperty()->SetColor(0.2, 0.3, 0.9);
+    renderer->AddActor(tube);
+  }
+  actor->SetMapper(mapper);
+  actor->SetPosition(1.0, 0.5, 0.0);
+  actor->GetProperty()->SetColor(0.9, 0.1, 0.1);
+  renderer->AddActor(actor);
+  vtkNew<vtkLight> light;
+  light->SetLightTypeToSceneLight();
+  light->SetPosition(1.0, 4.0, 3.0);
+  light->SetFocalPoint(0.0, 0.0, 0.0);
+  renderer->AddLight(light);
+
+  voxelgi_test::GIWindow view(renderer, 64, 100);
+  vtkNew<vtkRenderWindowInteractor> interactor;
+  interactor->SetRenderWindow(view.Window);
+  renderer->GetActiveCamera()->SetPosition(2.0, 3.0, 5.0);
+  renderer->ResetCamera();
+  view.Window->Render();
+  view.Window->Render();
+  VOXELGI_CHECK(view.GI->GetGIActive(), which << ": GI did not run");
+
+  vtkNew<vtkImageData> albedo;
+  VOXELGI_CHECK(view.GI->GetVoxelVolume(vtkVoxelGIPass::VOLUME_ALBEDO, albedo), "no albedo");
+  auto voxel = [&](double x, double y, double z) {
+    double p[3] = { x, y, z };
+    return albedo->GetPointData()->GetScalars()->GetTuple4(albedo->FindPoint(p));
+  };
+  const double* side = voxel(1.29, 0.5, 0.0);
+  std::cout << which << ": voxel at the sphere's side " << side[0] << " " << side[1] << " "
+            << side[2] << " " << side[3] << std::endl;
+  VOXELGI_CHECK(side[3] == 255, which << ": the sphere is not voxelized at its position");
+  VOXELGI_CHECK(side[0] > 200 && side[1] < 60 && side[2] < 60, which << ": not the sphere's red");
+  const double* unmoved = voxel(0.29, 0.5, 0.0);
+  VOXELGI_CHECK(unmoved[3] == 0, which << ": voxels where the sphere is without its position");
+  return EXIT_SUCCESS;
+}
