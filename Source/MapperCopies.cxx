@@ -4,6 +4,7 @@
 
 #include "vtkActor.h"
 #include "vtkCompositePolyDataMapper2.h"
+#include "vtkDataSetMapper.h"
 #include "vtkGlyph3DMapper.h"
 #include "vtkInformation.h"
 #include "vtkMapper.h"
@@ -93,6 +94,11 @@ vtkMapper* MapperCopies::CopyOf(vtkActor* actor)
     else
     {
       mapper->ShallowCopy(source);
+      // vtkDataSetMapper's ShallowCopy keeps its own input.
+      if (vtkDataSetMapper::SafeDownCast(source))
+      {
+        mapper->SetInputConnection(source->GetInputConnection(0, 0));
+      }
     }
     mapper->SetStatic(source->GetStatic());
     auto* compositeSource = vtkCompositePolyDataMapper2::SafeDownCast(source);

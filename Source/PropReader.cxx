@@ -7,6 +7,7 @@
 #include "vtkActor.h"
 #include "vtkCullerCollection.h"
 #include "vtkFrustumCoverageCuller.h"
+#include "vtkDataSetMapper.h"
 #include "vtkGlyph3DMapper.h"
 #include "vtkImageMapper3D.h"
 #include "vtkImageSlice.h"
@@ -45,8 +46,10 @@ std::string LeftOutReason(vtkProp* prop)
       (prop->IsA("vtkVolume") ? " (a volume)" : " (not an actor)");
   }
   vtkMapper* mapper = actor->GetMapper();
-  // Glyph mappers draw every instance through a polydata helper: voxelized like polygons.
-  if (!vtkOpenGLPolyDataMapper::SafeDownCast(mapper) && !vtkGlyph3DMapper::SafeDownCast(mapper))
+  // Glyph mappers draw every instance through a polydata helper, dataset mappers (any
+  // dataset: unstructured grids, image data) their surface through one: voxelized like polygons.
+  if (!vtkOpenGLPolyDataMapper::SafeDownCast(mapper) && !vtkGlyph3DMapper::SafeDownCast(mapper) &&
+    !vtkDataSetMapper::SafeDownCast(mapper))
   {
     return std::string(prop->GetClassName()) + " with a " +
       (mapper ? mapper->GetClassName() : "null mapper") + " (not a polydata mapper)";

@@ -1,7 +1,8 @@
 // Actor classes that draw through an internal actor are voxelized with their colour and
 // transform: a red sphere (radius 0.3) moved to (1, 0.5, 0) by its actor's position, over a
 // grey floor, as a vtkFollower ("follower"), a vtkLODActor ("lod") or a vtkQuadricLODActor
-// ("quadric", in a window with an interactor, which VTK's class needs); case "tubes": the
+// ("quadric", in a window with an interactor, which VTK's class needs), or as an
+// unstructured grid drawn by a vtkDataSetMapper ("dataset"); case "tubes": the
 // same sphere as a plain actor next to a line drawn as a tube (RenderLinesAsTubes), whose
 // voxelization shader once failed to compile and crashed. The voxel at the sphere's side
 // holds its colour; the voxel where the sphere would be without its position is empty.
@@ -9,8 +10,10 @@
 #include "vtkVoxelGIPass.h"
 
 #include "vtkActor.h"
+#include "vtkAppendFilter.h"
 #include "vtkCamera.h"
 #include "vtkDataArray.h"
+#include "vtkDataSetMapper.h"
 #include "vtkFollower.h"
 #include "vtkImageData.h"
 #include "vtkLODActor.h"
@@ -40,8 +43,18 @@ int TestVoxelPropKinds(int argc, char* argv[])
   ball->SetRadius(0.3);
   ball->SetThetaResolution(24);
   ball->SetPhiResolution(24);
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(ball->GetOutputPort());
+  vtkSmartPointer<vtkMapper> mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+  if (which == "dataset")
+  {
+    vtkNew<vtkAppendFilter> grid; // the sphere's polygons as an unstructured grid
+    grid->SetInputConnection(ball->GetOutputPort());
+    mapper = vtkSmartPointer<vtkDataSetMapper>::New();
+    mapper->SetInputConnection(grid->GetOutputPort());
+  }
+  else
+  {
+    mapper->SetInputConnection(ball->GetOutputPort());
+  }
   vtkSmartPointer<vtkActor> actor;
   if (which == "follower")
   {
@@ -56,6 +69,10 @@ int TestVoxelPropKinds(int argc, char* argv[])
   else if (which == "quadric")
   {
     actor = vtkSmartPointer<vtkQuadricLODActor>::New();
+  }
+  else if (which == "dataset")
+  {
+    actor = vtkSmartPointer<vtkActor>::New();
   }
   else
   {
