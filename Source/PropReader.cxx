@@ -16,7 +16,6 @@
 #include "vtkOpenGLPolyDataMapper.h"
 #include "vtkPlane.h"
 #include "vtkPlaneCollection.h"
-#include "vtkPolyData.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProperty.h"
@@ -69,26 +68,6 @@ std::string LeftOutReason(vtkProp* prop)
     return std::string(prop->GetClassName()) + " (translucent)";
   }
   return std::string();
-}
-
-/// Whether VTK draws lines for the prop (wireframe, edges, line cells, 3D text and axes):
-/// what a multisampled window anti-aliases most visibly.
-bool DrawsLines(vtkProp* prop)
-{
-  if (prop->IsA("vtkTextActor3D") || prop->IsA("vtkCubeAxesActor") ||
-    prop->IsA("vtkPolarAxesActor") || prop->IsA("vtkAxesActor"))
-  {
-    return true;
-  }
-  vtkActor* actor = vtkActor::SafeDownCast(prop);
-  if (!actor || !actor->GetMapper())
-  {
-    return false;
-  }
-  vtkProperty* property = actor->GetProperty();
-  auto* poly = vtkPolyData::SafeDownCast(actor->GetMapper()->GetInputDataObject(0, 0));
-  return property->GetRepresentation() == VTK_WIREFRAME || property->GetEdgeVisibility() ||
-    (poly && poly->GetNumberOfLines() > 0);
 }
 
 /// Whether VTK's culler reads the prop's bounds as they are now, and nothing else of it
@@ -267,7 +246,6 @@ void PropReader::ReadAll(vtkProp* prop, PropReading& reading)
   {
     std::copy(b, b + 6, reading.Bounds);
   }
-  reading.Lines = reading.HasBounds && DrawsLines(prop);
   reading.LeftOut = reading.HasBounds ? LeftOutReason(prop) : std::string();
   // After what modifies the prop while it is read: the bounds (they update its pipeline),
   // the keys (VTK modifies a prop when it first gets property keys) and whether it is

@@ -32,7 +32,6 @@ struct PropReading
   vtkMTimeType InputTime = 0; // the first input's modification time
   bool HasBounds = false;     // visible, with initialized bounds
   double Bounds[6] = {};
-  bool Lines = false;     // draws lines (what a multisampled window anti-aliases most)
   std::string LeftOut;    // why it is not voxelized (empty: it is, or it has no bounds)
 };
 

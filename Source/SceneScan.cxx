@@ -145,7 +145,6 @@ bool SceneScan::Collect(vtkRenderer* renderer, bool inRender,
   std::map<std::string, int> leftOut; // visible 3D props VTK renders without GI, by reason
   std::set<vtkProp*> slices;          // image slices voxelized through proxies
   bool anySpecular = false;
-  bool anyLines = false;
   vtkPropCollection* props = renderer->GetViewProps();
   this->PropSignatures.clear();
   this->Reader.Begin(renderer, inRender);
@@ -161,7 +160,6 @@ bool SceneScan::Collect(vtkRenderer* renderer, bool inRender,
       continue;
     }
     const double* b = reading.Bounds;
-    anyLines = anyLines || reading.Lines;
     if (!reading.LeftOut.empty())
     {
       // 2D props (text, legends, scalar bars) have no bounds and never get here.
@@ -196,19 +194,21 @@ bool SceneScan::Collect(vtkRenderer* renderer, bool inRender,
   this->Slices.Retain(slices);
   this->ReportLeftOut(leftOut, warnings);
   this->AnySpecular = anySpecular;
-  this->AnyLines = anyLines;
   return !records.empty();
 }
 
 void SceneScan::ReportLeftOut(
   const std::map<std::string, int>& leftOut, std::vector<std::string>& warnings)
 {
-  // Said once for each new kind of prop left out.
+  // Said for each new kind of prop left out, and again with the count once that has
+  // doubled (props often arrive after the first render), not at every prop added.
   std::ostringstream text;
   for (const auto& kind : leftOut)
   {
-    if (this->WarnedLeftOut.insert(kind.first).second)
+    int& said = this->WarnedLeftOut[kind.first];
+    if (said == 0 || kind.second >= 2 * said)
     {
+      said = kind.second;
       text << (text.tellp() > 0 ? "; " : "") << kind.second << " x " << kind.first;
     }
   }

@@ -21,7 +21,6 @@
 #include <array>
 #include <cstddef>
 #include <map>
-#include <set>
 #include <string>
 #include <vector>
 
@@ -89,8 +88,6 @@ public:
   const std::vector<ActorRecord>& GetRecords() const { return this->Records; }
   /// Any voxelized actor with a specular coefficient above 0 (else no specular cone).
   bool GetAnySpecular() const { return this->AnySpecular; }
-  /// Whether a visible prop draws lines (wireframe, edges, line cells, 3D text or axes).
-  bool GetAnyLines() const { return this->AnyLines; }
   /// CPU time of the last Scan(), milliseconds.
   double GetMilliseconds() const { return this->Milliseconds; }
 
@@ -126,8 +123,7 @@ private:
   bool InvalidateRequested = false;
   int FramesSinceUpdate = 0;
   bool AnySpecular = false;
-  bool AnyLines = false;
-  std::set<std::string> WarnedLeftOut; // kinds of props left out that were reported
+  std::map<std::string, int> WarnedLeftOut; // kinds of props left out: the count said
   double Milliseconds = 0.0;
   std::vector<vtkMTimeType> PropSignatures; // of every view prop, by the last Scan()
 };

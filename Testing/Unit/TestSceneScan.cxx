@@ -242,7 +242,7 @@ TEST_F(ScanFixture, VoxelSettingsRebuildWhateverThePolicy)
   EXPECT_EQ(this->Update.Grid.Resolution, 64);
 }
 
-TEST_F(ScanFixture, TranslucentAndWireframeAreLeftOutWithOneNotice)
+TEST_F(ScanFixture, TranslucentAndWireframeAreLeftOutWithNoticesThatCount)
 {
   AddSphere(this->Renderer, 0.0);
   AddSphere(this->Renderer, 2.0)->GetProperty()->SetOpacity(0.5);
@@ -257,7 +257,15 @@ TEST_F(ScanFixture, TranslucentAndWireframeAreLeftOutWithOneNotice)
   EXPECT_TRUE(this->Messages.Warnings.empty()); // said once
   AddSphere(this->Renderer, 6.0)->GetProperty()->SetOpacity(0.2);
   ASSERT_TRUE(this->Next());
-  EXPECT_TRUE(this->Messages.Warnings.empty()); // one more of a kind already reported
+  ASSERT_EQ(this->Messages.Warnings.size(), 1u); // the count of a kind doubled: said again
+  EXPECT_EQ(this->Messages.Warnings[0], "Rendered by VTK without voxel GI: 2 x vtkOpenGLActor (translucent).");
+  AddSphere(this->Renderer, 8.0)->GetProperty()->SetOpacity(0.2);
+  ASSERT_TRUE(this->Next());
+  EXPECT_TRUE(this->Messages.Warnings.empty()); // 3 of a kind said at 2
+  AddSphere(this->Renderer, 10.0)->GetProperty()->SetOpacity(0.2);
+  ASSERT_TRUE(this->Next());
+  ASSERT_EQ(this->Messages.Warnings.size(), 1u);
+  EXPECT_EQ(this->Messages.Warnings[0], "Rendered by VTK without voxel GI: 4 x vtkOpenGLActor (translucent).");
 }
 
 TEST_F(ScanFixture, GlyphMappersAreVoxelized)
