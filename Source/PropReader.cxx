@@ -5,17 +5,21 @@
 
 #include "vtkAbstractVolumeMapper.h"
 #include "vtkActor.h"
+#include "vtkAssembly.h"
 #include "vtkCullerCollection.h"
-#include "vtkFrustumCoverageCuller.h"
 #include "vtkDataSetMapper.h"
+#include "vtkFrustumCoverageCuller.h"
 #include "vtkGlyph3DMapper.h"
 #include "vtkImageMapper3D.h"
 #include "vtkImageSlice.h"
+#include "vtkLinearTransform.h"
 #include "vtkMapper.h"
 #include "vtkMath.h"
+#include "vtkMatrix4x4.h"
 #include "vtkOpenGLPolyDataMapper.h"
 #include "vtkPlane.h"
 #include "vtkPlaneCollection.h"
+#include "vtkProp3DCollection.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProperty.h"
@@ -146,6 +150,48 @@ vtkMTimeType MaterialTime(vtkActor* actor)
   }
   return t;
 }
+
+/// An assembly's own transform, and of each part (nested assemblies too) what it draws: its
+/// mapper, inputs, material, clipping, user matrix and transform, property and texture, but
+/// not the part's own time, which the assembly bumps at every render (it pokes its matrix
+/// into each part before drawing it). A part moved or hidden on its own inside an assembly
+/// is therefore seen only with the next change of its assembly.
+vtkMTimeType AssemblyTime(vtkAssembly* assembly)
+{
+  vtkMTimeType t = assembly->vtkProp3D::GetMTime();
+  vtkProp3DCollection* parts = assembly->GetParts();
+  vtkCollectionSimpleIterator it;
+  parts->InitTraversal(it);
+  while (vtkProp3D* part = parts->GetNextProp3D(it))
+  {
+    if (auto* nested = vtkAssembly::SafeDownCast(part))
+    {
+      t = std::max(t, AssemblyTime(nested));
+      continue;
+    }
+    if (vtkMatrix4x4* matrix = part->GetUserMatrix())
+    {
+      t = std::max(t, matrix->GetMTime());
+    }
+    if (vtkLinearTransform* transform = part->GetUserTransform())
+    {
+      t = std::max(t, transform->GetMTime());
+    }
+    auto* actor = vtkActor::SafeDownCast(part);
+    if (!actor || !actor->GetMapper())
+    {
+      continue;
+    }
+    vtkMapper* mapper = actor->GetMapper();
+    t = std::max({ t, MaterialTime(actor), actor->GetProperty()->GetMTime(), mapper->GetMTime(),
+      InputsTime(mapper), ClippingTime(mapper) });
+    if (vtkTexture* texture = actor->GetTexture())
+    {
+      t = std::max(t, texture->GetMTime());
+    }
+  }
+  return t;
+}
 }
 
 vtkMTimeType PropReader::ActorSignature(vtkActor* actor, vtkMTimeType* inputTime)
@@ -170,6 +216,10 @@ vtkMTimeType PropReader::PropSignature(vtkProp* prop, vtkMTimeType* inputTime)
   if (actor && actor->GetMapper())
   {
     return ActorSignature(actor, inputTime);
+  }
+  if (auto* assembly = vtkAssembly::SafeDownCast(prop))
+  {
+    return AssemblyTime(assembly);
   }
   // Images and volumes: their mapper and its inputs.
   vtkAbstractMapper* mapper = nullptr;

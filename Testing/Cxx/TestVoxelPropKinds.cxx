@@ -2,7 +2,10 @@
 // transform: a red sphere (radius 0.3) moved to (1, 0.5, 0) by its actor's position, over a
 // grey floor, as a vtkFollower ("follower"), a vtkLODActor ("lod") or a vtkQuadricLODActor
 // ("quadric", in a window with an interactor, which VTK's class needs), or as an
-// unstructured grid drawn by a vtkDataSetMapper ("dataset"); case "tubes": the
+// unstructured grid drawn by a vtkDataSetMapper ("dataset"); case "assembly": the sphere as a
+// plain actor next to a nested vtkAssembly with a transform (left to VTK, which bumps its
+// parts' times at every render): an unchanged frame only presents, moving the assembly
+// traces again; case "tubes": the
 // same sphere as a plain actor next to a line drawn as a tube (RenderLinesAsTubes), whose
 // voxelization shader once failed to compile and crashed. The voxel at the sphere's side
 // holds its colour; the voxel where the sphere would be without its position is empty.
@@ -11,7 +14,9 @@
 
 #include "vtkActor.h"
 #include "vtkAppendFilter.h"
+#include "vtkAssembly.h"
 #include "vtkCamera.h"
+#include "vtkCubeSource.h"
 #include "vtkDataArray.h"
 #include "vtkDataSetMapper.h"
 #include "vtkFollower.h"
@@ -70,7 +75,7 @@ int TestVoxelPropKinds(int argc, char* argv[])
   {
     actor = vtkSmartPointer<vtkQuadricLODActor>::New();
   }
-  else if (which == "dataset")
+  else if (which == "dataset" || which == "assembly")
   {
     actor = vtkSmartPointer<vtkActor>::New();
   }
@@ -94,6 +99,22 @@ int TestVoxelPropKinds(int argc, char* argv[])
   actor->SetPosition(1.0, 0.5, 0.0);
   actor->GetProperty()->SetColor(0.9, 0.1, 0.1);
   renderer->AddActor(actor);
+  vtkNew<vtkAssembly> outer;
+  if (which == "assembly")
+  {
+    vtkNew<vtkCubeSource> cube;
+    vtkNew<vtkPolyDataMapper> cubeMapper;
+    cubeMapper->SetInputConnection(cube->GetOutputPort());
+    vtkNew<vtkActor> block;
+    block->SetMapper(cubeMapper);
+    block->SetScale(0.4);
+    vtkNew<vtkAssembly> inner;
+    inner->AddPart(block);
+    inner->SetPosition(0.0, 0.3, 0.0);
+    outer->AddPart(inner);
+    outer->SetPosition(-1.0, 0.0, 0.5);
+    renderer->AddActor(outer);
+  }
   vtkNew<vtkLight> light;
   light->SetLightTypeToSceneLight();
   light->SetPosition(1.0, 4.0, 3.0);
@@ -122,5 +143,16 @@ int TestVoxelPropKinds(int argc, char* argv[])
   VOXELGI_CHECK(side[0] > 200 && side[1] < 60 && side[2] < 60, which << ": not the sphere's red");
   const double* unmoved = voxel(0.29, 0.5, 0.0);
   VOXELGI_CHECK(unmoved[3] == 0, which << ": voxels where the sphere is without its position");
+  if (which == "assembly")
+  {
+    view.Window->Render();
+    const std::string unchanged = voxelgi_test::StagesRan(view.GI);
+    outer->SetPosition(-1.0, 0.0, 0.2);
+    view.Window->Render();
+    const std::string moved = voxelgi_test::StagesRan(view.GI);
+    std::cout << "unchanged frame: " << unchanged << "; assembly moved: " << moved << std::endl;
+    VOXELGI_CHECK(unchanged == "Scan,Present", "an unchanged frame with an assembly traced again");
+    VOXELGI_CHECK(moved.find("GBuffer") != std::string::npos, "a moved assembly was not traced");
+  }
   return EXIT_SUCCESS;
 }
