@@ -149,7 +149,9 @@ int MapperCopies::Draw(vtkActor* actor, vtkRenderer* renderer)
 
 vtkActor* MapperCopies::Drawing(Copy& copy, vtkActor* actor)
 {
-  if (actor->IsA("vtkOpenGLActor"))
+  vtkProperty* property = actor->GetProperty();
+  const bool imposters = property->GetRenderLinesAsTubes() || property->GetRenderPointsAsSpheres();
+  if (actor->IsA("vtkOpenGLActor") && !imposters)
   {
     return actor;
   }
@@ -161,10 +163,28 @@ vtkActor* MapperCopies::Drawing(Copy& copy, vtkActor* actor)
   vtkActor* standIn = copy.StandIn;
   // The same objects each frame: nothing is modified unless the actor's are.
   standIn->SetUserMatrix(actor->GetMatrix());
-  standIn->SetProperty(actor->GetProperty());
   standIn->SetBackfaceProperty(actor->GetBackfaceProperty());
   standIn->SetTexture(actor->GetTexture());
   standIn->SetPropertyKeys(actor->GetPropertyKeys()); // the stage's render-pass keys
+  if (!imposters)
+  {
+    standIn->SetProperty(property);
+    return standIn;
+  }
+  // Lines as tubes and points as spheres draw no triangles here, and VTK's imposter code does
+  // not build with these stages' shaders: a copy of the property draws them as lines and points.
+  if (!copy.Property || property->GetMTime() > copy.PropertySynced)
+  {
+    if (!copy.Property)
+    {
+      copy.Property = vtkSmartPointer<vtkProperty>::New();
+    }
+    copy.Property->DeepCopy(property);
+    copy.Property->SetRenderLinesAsTubes(false);
+    copy.Property->SetRenderPointsAsSpheres(false);
+    copy.PropertySynced = property->GetMTime();
+  }
+  standIn->SetProperty(copy.Property);
   return standIn;
 }
 

@@ -15,6 +15,7 @@
 class vtkActor;
 class vtkMapper;
 class vtkProp;
+class vtkProperty;
 class vtkRenderer;
 class vtkWindow;
 
@@ -35,7 +36,9 @@ struct ActorRecord;
  * An actor class that does not draw a mapper it is handed (vtkFollower, vtkLODActor,
  * vtkQuadricLODActor: they draw through an internal OpenGL actor, and vtkActor's own
  * Render(renderer, mapper) draws nothing) is drawn through a stand-in OpenGL actor with its
- * matrix (a follower's faces its camera), property, textures and property keys.
+ * matrix (a follower's faces its camera), property, textures and property keys; so is an
+ * actor whose lines are drawn as tubes or points as spheres, with a copy of its property
+ * that draws them as lines and points.
  */
 class MapperCopies
 {
@@ -64,6 +67,8 @@ private:
     vtkSmartPointer<vtkMapper> Mapper;
     vtkMTimeType Synced = 0;
     vtkSmartPointer<vtkActor> StandIn; // for actors that draw through an internal actor
+    vtkSmartPointer<vtkProperty> Property; // the stand-in's, for lines as tubes, points as spheres
+    vtkMTimeType PropertySynced = 0;
   };
   /// The up-to-date copy of the actor's mapper.
   vtkMapper* CopyOf(vtkActor* actor);

@@ -5,7 +5,10 @@
 // unstructured grid drawn by a vtkDataSetMapper ("dataset"); case "assembly": the sphere as a
 // plain actor next to a nested vtkAssembly with a transform (left to VTK, which bumps its
 // parts' times at every render): an unchanged frame only presents, moving the assembly
-// traces again; case "tubes": the
+// traces again; case "edges": the sphere as a plain actor with green edges drawn as tubes and
+// green vertices as spheres (as VTK's TestCompositePolyDataMapper2Vertices: VTK 9.1's unlit
+// shaders do not compile for it, and the pass's own renderers were unlit; and the voxels of a
+// surface with edges were black): the voxels keep the surface's red; case "tubes": the
 // same sphere as a plain actor next to a line drawn as a tube (RenderLinesAsTubes), whose
 // voxelization shader once failed to compile and crashed. The voxel at the sphere's side
 // holds its colour; the voxel where the sphere would be without its position is empty.
@@ -78,6 +81,19 @@ int TestVoxelPropKinds(int argc, char* argv[])
   else if (which == "dataset" || which == "assembly")
   {
     actor = vtkSmartPointer<vtkActor>::New();
+  }
+  else if (which == "edges")
+  {
+    actor = vtkSmartPointer<vtkActor>::New();
+    vtkProperty* property = actor->GetProperty();
+    property->EdgeVisibilityOn();
+    property->RenderLinesAsTubesOn();
+    property->SetLineWidth(4.0);
+    property->SetEdgeColor(0.1, 0.9, 0.1); // the voxels take the surface's colour
+    property->VertexVisibilityOn();
+    property->RenderPointsAsSpheresOn();
+    property->SetPointSize(6.0);
+    property->SetVertexColor(0.1, 0.9, 0.1);
   }
   else
   {
