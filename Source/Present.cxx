@@ -139,6 +139,15 @@ int Present::RenderRemainingSteps(const Frame& frame)
   vtkOpenGLState* ostate = frame.Window->GetState();
   vtkOpenGLState::ScopedglEnableDisable depthTest(ostate, GL_DEPTH_TEST);
   ostate->vtkglEnable(GL_DEPTH_TEST);
+  // The renderer's viewport, as VTK's camera pass sets it around all of its steps (2D props
+  // place and scale themselves by it; the camera pass drawing the opaque steps restored the
+  // previous one).
+  vtkOpenGLState::ScopedglViewport viewport(ostate);
+  vtkOpenGLState::ScopedglScissor scissor(ostate);
+  vtkOpenGLState::ScopedglEnableDisable scissorTest(ostate, GL_SCISSOR_TEST);
+  ostate->vtkglViewport(frame.X, frame.Y, frame.Width, frame.Height);
+  ostate->vtkglScissor(frame.X, frame.Y, frame.Width, frame.Height);
+  ostate->vtkglEnable(GL_SCISSOR_TEST);
   int rendered = 0;
   // Translucent geometry as the renderer alone draws it: with its order-independent
   // translucency or depth peeling as its settings say (the steps pass's own translucent
