@@ -75,7 +75,7 @@ foreach (i RANGE ${last})
   voxelgi_comment("${details}" "  " comment)
   string(APPEND blocks "  ///@{\n  /**\n${comment}   */\n")
   if (type STREQUAL "bool")
-    string(APPEND blocks "  vtkSetMacro(${name}, vtkTypeBool);\n"
+    string(APPEND blocks "  vtkVoxelGISetBoolMacro(${name});\n"
                          "  vtkGetMacro(${name}, vtkTypeBool);\n"
                          "  vtkBooleanMacro(${name}, vtkTypeBool);\n")
     set(member_type vtkTypeBool)
@@ -145,7 +145,7 @@ set(content "// Generated from VoxelGISettings.json by GenerateSettings.cmake. D
  * single list of the pass's settings: each setting's Set/Get pair with its documentation, its
  * range and its default. Setters clamp to the setting's range (Get<Name>MinValue(),
  * Get<Name>MaxValue()); doubles refuse NaN with a warning that names the setting; booleans
- * have <Name>On()/<Name>Off(); enumerations have their constants and Set<Name>To<Value>().
+ * store 0 or 1 and have <Name>On()/<Name>Off(); enumerations have their constants and Set<Name>To<Value>().
  * Use them through vtkVoxelGIPass; vtkVoxelGISettings lists them by name.
  *
  * @sa vtkVoxelGIPass vtkVoxelGISettings
@@ -177,6 +177,18 @@ set(content "// Generated from VoxelGISettings.json by GenerateSettings.cmake. D
   }                                                                                            \\
   virtual type Get##name##MinValue() { return min; }                                           \\
   virtual type Get##name##MaxValue() { return max; }
+
+// A boolean stored as 0 or 1, whatever non-zero value it is given (C, Python, ParaView).
+#define vtkVoxelGISetBoolMacro(name)                                                           \\
+  virtual void Set##name(vtkTypeBool _arg)                                                     \\
+  {                                                                                            \\
+    const vtkTypeBool value = _arg != 0 ? 1 : 0;                                               \\
+    if (this->name != value)                                                                   \\
+    {                                                                                          \\
+      this->name = value;                                                                      \\
+      this->Modified();                                                                        \\
+    }                                                                                          \\
+  }
 
 class VTKRENDERINGVOXELGI_EXPORT vtkVoxelGIPassSettings : public vtkOpenGLRenderPass
 {

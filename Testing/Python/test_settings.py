@@ -87,6 +87,9 @@ def main(table_path):
             check(get() == 0, "%s: Off does not turn it off" % name)
             getattr(gi, name + "On")()
             check(get() == 1, "%s: On does not turn it on" % name)
+            for value, expected in ((7, 1), (-5, 1), (-1000, 1), (0, 0)):
+                put(value)
+                check(get() == expected, "%s: Set(%s) keeps %s, expected %s" % (name, value, get(), expected))
             continue
         lo, hi = s["min"], s["max"]
         for bound, expected in (("Min", lo), ("Max", hi)):

@@ -103,7 +103,8 @@ class Header:
                           r"\s*([^)]+?)\s*\)" % name, self.code)
         if clamp:
             return clamp, clamp.start()
-        other = re.search(r"\bvtkSetMacro\(\s*%s\s*,|\bvoid\s+Set%s\s*\(" % (name, name), self.code)
+        other = re.search(r"\b(?:vtkSetMacro\(\s*%s\s*,|vtkVoxelGISetBoolMacro\(\s*%s\s*\))|\bvoid\s+Set%s\s*\("
+                          % (name, name, name), self.code)
         return (None, other.start()) if other else None
 
     def doc_comment(self, name, offset):
@@ -162,7 +163,8 @@ def check_header(s, header):
     copy = "vtkVoxelGIPassSettings.h"
     setter = header.setter(name)
     if setter is None:
-        fail(name, copy, "declares no setter (vtkSetClampMacro, vtkSetMacro or Set%s())" % name)
+        fail(name, copy, "declares no setter (vtkSetClampMacro, vtkSetMacro, vtkVoxelGISetBoolMacro "
+             "or Set%s())" % name)
         return
     clamp, offset = setter
 
