@@ -8,7 +8,8 @@
 // one-sample image the same way by at least 40 % as much; then the image is compared with
 // its baseline.
 // Case "unchanged": frames that show the same image again copy the last one back: the
-// second unchanged frame draws no mapper, and its image equals the one VTK and the blend drew.
+// second unchanged frame draws no mapper, and its image equals the one VTK and the blend drew;
+// after the window's sample count changes, the image equals a fresh pass's.
 // Case "fxaa": a window without multisampling, the renderer's FXAA on: with every GI term off
 // the image equals plain VTK's FXAA image within 2 levels; at the defaults GI runs and FXAA
 // more than doubles the soft edge pixels of the window without it (pixels whose 3x3
@@ -262,6 +263,24 @@ int TestGIAntiAliasing(int argc, char* argv[])
     draws = 0;
     window->Render();
     VOXELGI_CHECK(draws > 0, "a camera move did not draw");
+    // Only the window's sample count changes: VTK's framebuffer is new, the copy is not used,
+    // and the image equals a fresh pass's in the same window (both traced in full).
+    gi->SetTemporalReuse(false);
+    window->Render();
+    window->Render();
+    window->SetMultiSamples(0);
+    draws = 0;
+    window->Render();
+    VOXELGI_CHECK(draws > 0, "a new sample count presented the old copy");
+    auto resampled = Pixels(window);
+    vtkNew<vtkVoxelGIPass> fresh;
+    fresh->SetVoxelResolution(64);
+    renderer->SetPass(fresh);
+    window->Render();
+    const int stale = LargestDifference(resampled, Pixels(window));
+    std::cout << "after the sample count changed: largest difference from a fresh pass " << stale
+              << " levels" << std::endl;
+    VOXELGI_CHECK(stale <= 2, "the image after a sample-count change differs from a fresh pass's");
     return EXIT_SUCCESS;
   }
 
