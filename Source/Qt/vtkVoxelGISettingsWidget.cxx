@@ -126,8 +126,18 @@ vtkVoxelGISettingsWidget::vtkVoxelGISettingsWidget(QWidget* parent)
       spin->setDecimals(3);
       spin->setRange(lo, hi);
       spin->setSingleStep((hi - lo) / 100.0);
+      // A value finer than the control shows (0.0004 shown as 0.000) stays unless the user
+      // changes what is shown: Enter on an unedited control changes nothing.
       connect(spin, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this,
-        [this, name](double value) { this->apply(name, value); });
+        [this, name, spin](double value) {
+          const double shown = 0.5 * std::pow(10.0, -spin->decimals());
+          if (this->Pass &&
+            std::abs(vtkVoxelGISettings::GetValue(this->Pass, name.toUtf8().constData()) - value) < shown)
+          {
+            return;
+          }
+          this->apply(name, value);
+        });
       control = spin;
     }
     control->setObjectName(name);

@@ -107,6 +107,26 @@ private Q_SLOTS:
     QCOMPARE(qobject_cast<QCheckBox*>(panel.control("Enabled"))->isChecked(), false);
   }
 
+  void enterKeepsValuesNobodyEdited()
+  {
+    // Values finer than the controls show: focusing a control and pressing Enter changes
+    // nothing.
+    vtkNew<vtkVoxelGIPass> pass;
+    pass->SetAmbientOcclusionFalloff(0.0004);
+    pass->SetConeStepFactor(0.0504);
+    vtkVoxelGISettingsWidget panel;
+    panel.setPass(pass);
+    for (const char* name : { "AmbientOcclusionFalloff", "ConeStepFactor" })
+    {
+      auto* spin = qobject_cast<QDoubleSpinBox*>(panel.control(name));
+      spin->setFocus();
+      QTest::keyClick(spin, Qt::Key_Return);
+      spin->clearFocus();
+    }
+    QCOMPARE(pass->GetAmbientOcclusionFalloff(), 0.0004);
+    QCOMPARE(pass->GetConeStepFactor(), 0.0504);
+  }
+
   void resetRestoresDefaults()
   {
     vtkNew<vtkVoxelGIPass> pass;
