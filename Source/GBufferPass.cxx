@@ -13,7 +13,6 @@
 #include "vtkOpenGLPolyDataMapper.h"
 #include "vtkOpenGLRenderPass.h"
 #include "vtkOpenGLRenderWindow.h"
-#include "vtkOpenGLState.h"
 #include "vtkProperty.h"
 #include "vtkRenderPassCollection.h"
 #include "vtkRenderState.h"
@@ -21,7 +20,6 @@
 #include "vtkSequencePass.h"
 #include "vtkShaderProgram.h"
 #include "vtk_glew.h"
-
 
 namespace voxelgi
 {

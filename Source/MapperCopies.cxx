@@ -57,7 +57,7 @@ void CopyGlyphMapper(vtkGlyph3DMapper* source, vtkGlyph3DMapper* copy)
 MapperCopies::~MapperCopies() = default;
 
 //------------------------------------------------------------------------------
-vtkMapper* MapperCopies::CopyOf(vtkActor* actor)
+MapperCopies::Copy& MapperCopies::CopyOf(vtkActor* actor)
 {
   vtkMapper* source = actor->GetMapper();
   Copy& copy = this->Copies[actor];
@@ -113,7 +113,7 @@ vtkMapper* MapperCopies::CopyOf(vtkActor* actor)
     }
     copy.Synced = source->GetMTime();
   }
-  return copy.Mapper;
+  return copy;
 }
 
 //------------------------------------------------------------------------------
@@ -123,8 +123,9 @@ int MapperCopies::Draw(vtkActor* actor, vtkRenderer* renderer)
   {
     return 0;
   }
-  vtkMapper* mapper = this->CopyOf(actor);
-  vtkActor* drawing = this->Drawing(this->Copies[actor], actor);
+  Copy& copy = this->CopyOf(actor);
+  vtkMapper* mapper = copy.Mapper;
+  vtkActor* drawing = this->Drawing(copy, actor);
   // What vtkActor::RenderOpaqueGeometry does, with the copy in place of the actor's mapper:
   // the property and the textures are the actor's own.
   vtkProperty* property = drawing->GetProperty();
@@ -150,8 +151,11 @@ int MapperCopies::Draw(vtkActor* actor, vtkRenderer* renderer)
 vtkActor* MapperCopies::Drawing(Copy& copy, vtkActor* actor)
 {
   vtkProperty* property = actor->GetProperty();
-  const bool imposters = property->GetRenderLinesAsTubes() || property->GetRenderPointsAsSpheres();
-  if (actor->IsA("vtkOpenGLActor") && !imposters)
+  // What only the displayed image shows: edges and vertices drawn over a surface, lines as
+  // tubes, points as spheres.
+  const bool overlays = property->GetEdgeVisibility() || property->GetVertexVisibility() ||
+    property->GetRenderLinesAsTubes() || property->GetRenderPointsAsSpheres();
+  if (actor->IsA("vtkOpenGLActor") && !overlays)
   {
     return actor;
   }
@@ -166,13 +170,15 @@ vtkActor* MapperCopies::Drawing(Copy& copy, vtkActor* actor)
   standIn->SetBackfaceProperty(actor->GetBackfaceProperty());
   standIn->SetTexture(actor->GetTexture());
   standIn->SetPropertyKeys(actor->GetPropertyKeys()); // the stage's render-pass keys
-  if (!imposters)
+  if (!overlays)
   {
     standIn->SetProperty(property);
     return standIn;
   }
-  // Lines as tubes and points as spheres draw no triangles here, and VTK's imposter code does
-  // not build with these stages' shaders: a copy of the property draws them as lines and points.
+  // These stages draw the surfaces: the voxels take a surface's own colour (VTK's edge code
+  // mixes in the edge colour), lines and points add no voxels or shadows as tubes or spheres,
+  // and VTK's code for those does not build with these stages' shaders (VTK 9.1's unlit tube
+  // edges do not compile at all). A copy of the property draws the surface alone.
   if (!copy.Property || property->GetMTime() > copy.PropertySynced)
   {
     if (!copy.Property)
@@ -180,6 +186,8 @@ vtkActor* MapperCopies::Drawing(Copy& copy, vtkActor* actor)
       copy.Property = vtkSmartPointer<vtkProperty>::New();
     }
     copy.Property->DeepCopy(property);
+    copy.Property->SetEdgeVisibility(false);
+    copy.Property->SetVertexVisibility(false);
     copy.Property->SetRenderLinesAsTubes(false);
     copy.Property->SetRenderPointsAsSpheres(false);
     copy.PropertySynced = property->GetMTime();

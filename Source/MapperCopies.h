@@ -37,8 +37,8 @@ struct ActorRecord;
  * vtkQuadricLODActor: they draw through an internal OpenGL actor, and vtkActor's own
  * Render(renderer, mapper) draws nothing) is drawn through a stand-in OpenGL actor with its
  * matrix (a follower's faces its camera), property, textures and property keys; so is an
- * actor whose lines are drawn as tubes or points as spheres, with a copy of its property
- * that draws them as lines and points.
+ * actor that shows its edges or vertices or draws lines as tubes or points as spheres, with
+ * a copy of its property that draws the surface alone.
  */
 class MapperCopies
 {
@@ -67,11 +67,11 @@ private:
     vtkSmartPointer<vtkMapper> Mapper;
     vtkMTimeType Synced = 0;
     vtkSmartPointer<vtkActor> StandIn; // for actors that draw through an internal actor
-    vtkSmartPointer<vtkProperty> Property; // the stand-in's, for lines as tubes, points as spheres
+    vtkSmartPointer<vtkProperty> Property; // the stand-in's, without edges, vertices, imposters
     vtkMTimeType PropertySynced = 0;
   };
-  /// The up-to-date copy of the actor's mapper.
-  vtkMapper* CopyOf(vtkActor* actor);
+  /// The actor's copy, its mapper up to date.
+  Copy& CopyOf(vtkActor* actor);
   /// The actor that draws the copy: `actor` itself, or its stand-in, brought up to date.
   vtkActor* Drawing(Copy& copy, vtkActor* actor);
   void Erase(std::unordered_map<vtkActor*, Copy>::iterator it, vtkWindow* window);

@@ -36,6 +36,27 @@ const char* PresentSource()
   }();
   return source.c_str();
 }
+
+/// The renderer's viewport and scissor box while it lives, as VTK's camera pass sets them
+/// around all of its steps; the previous ones afterwards.
+class RendererViewport
+{
+public:
+  RendererViewport(const Frame& frame, vtkOpenGLState* state)
+    : Viewport(state)
+    , Scissor(state)
+    , ScissorTest(state, GL_SCISSOR_TEST)
+  {
+    state->vtkglEnable(GL_SCISSOR_TEST);
+    state->vtkglViewport(frame.X, frame.Y, frame.Width, frame.Height);
+    state->vtkglScissor(frame.X, frame.Y, frame.Width, frame.Height);
+  }
+
+private:
+  vtkOpenGLState::ScopedglViewport Viewport;
+  vtkOpenGLState::ScopedglScissor Scissor;
+  vtkOpenGLState::ScopedglEnableDisable ScissorTest;
+};
 }
 
 Present::Present(const Composite& composite, GBufferPass& gbuffer, const DebugView& debug)
@@ -108,17 +129,12 @@ void Present::Draw(const Frame& frame, vtkTextureObject* scale, vtkTextureObject
   program->SetUniformi("gbufferDepth", (depth ? depth : add)->GetTextureUnit());
   program->SetUniformi("absolute", scale ? 0 : 1);
   vtkOpenGLState* ostate = frame.Window->GetState();
-  vtkOpenGLState::ScopedglViewport viewport(ostate);
-  vtkOpenGLState::ScopedglScissor scissor(ostate);
-  vtkOpenGLState::ScopedglEnableDisable scissorTest(ostate, GL_SCISSOR_TEST);
+  RendererViewport viewport(frame, ostate);
   vtkOpenGLState::ScopedglEnableDisable depthTest(ostate, GL_DEPTH_TEST);
   vtkOpenGLState::ScopedglEnableDisable blend(ostate, GL_BLEND);
   vtkOpenGLState::ScopedglBlendFuncSeparate blendFunc(ostate);
   vtkOpenGLState::ScopedglDepthFunc depthFunc(ostate);
   vtkOpenGLState::ScopedglDepthMask depthMask(ostate);
-  ostate->vtkglEnable(GL_SCISSOR_TEST);
-  ostate->vtkglViewport(frame.X, frame.Y, frame.Width, frame.Height);
-  ostate->vtkglScissor(frame.X, frame.Y, frame.Width, frame.Height);
   ostate->vtkglEnable(GL_BLEND);
   ostate->vtkglBlendEquation(GL_FUNC_ADD);
   // Each sample: add + scale * sample (alpha: 0 + 1 * alpha).
@@ -139,15 +155,9 @@ int Present::RenderRemainingSteps(const Frame& frame)
   vtkOpenGLState* ostate = frame.Window->GetState();
   vtkOpenGLState::ScopedglEnableDisable depthTest(ostate, GL_DEPTH_TEST);
   ostate->vtkglEnable(GL_DEPTH_TEST);
-  // The renderer's viewport, as VTK's camera pass sets it around all of its steps (2D props
-  // place and scale themselves by it; the camera pass drawing the opaque steps restored the
-  // previous one).
-  vtkOpenGLState::ScopedglViewport viewport(ostate);
-  vtkOpenGLState::ScopedglScissor scissor(ostate);
-  vtkOpenGLState::ScopedglEnableDisable scissorTest(ostate, GL_SCISSOR_TEST);
-  ostate->vtkglViewport(frame.X, frame.Y, frame.Width, frame.Height);
-  ostate->vtkglScissor(frame.X, frame.Y, frame.Width, frame.Height);
-  ostate->vtkglEnable(GL_SCISSOR_TEST);
+  // 2D props place and scale themselves by the viewport; the camera pass that drew the
+  // opaque steps has put the previous one back.
+  RendererViewport viewport(frame, ostate);
   int rendered = 0;
   // Translucent geometry as the renderer alone draws it: with its order-independent
   // translucency or depth peeling as its settings say (the steps pass's own translucent

@@ -369,19 +369,6 @@ bool VoxelizePass::PostReplaceShaderValues(
   static const std::regex perVertex(R"((\w+)\[i\]((?:\.\w+|\[\w+\])*))");
   geometry = std::regex_replace(geometry, perVertex,
     "(voxelBary.x * $1[0]$2 + voxelBary.y * $1[1]$2 + voxelBary.z * $1[2]$2)");
-  // Surfaces drawn with their edges (EdgeVisibility): VTK's fragment code mixes in the edge
-  // colour by distances that its own edge geometry shader writes. The voxels take the
-  // surface's colour: every fragment lies far from any edge.
-  if (fragment.find("edgeEqn") != std::string::npos)
-  {
-    const std::size_t main = geometry.find("void main()");
-    if (main != std::string::npos)
-    {
-      geometry.insert(main, "out vec4 edgeEqn[3];\n");
-    }
-    vtkShaderProgram::Substitute(geometry, "EmitVertex();",
-      "edgeEqn[0] = edgeEqn[1] = edgeEqn[2] = vec4(0.0, 0.0, 0.0, 1.0e6);\n    EmitVertex();");
-  }
 
   vtkShaderProgram::Substitute(fragment, "//VTK::System::Dec",
     std::string("//VTK::System::Dec\n") + shaders::voxelize_extensions_glsl + this->Defines());
