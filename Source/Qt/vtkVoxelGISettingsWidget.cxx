@@ -126,18 +126,8 @@ vtkVoxelGISettingsWidget::vtkVoxelGISettingsWidget(QWidget* parent)
       spin->setDecimals(3);
       spin->setRange(lo, hi);
       spin->setSingleStep((hi - lo) / 100.0);
-      // A value finer than the control shows (0.0004 shown as 0.000) stays unless the user
-      // changes what is shown: Enter on an unedited control changes nothing.
       connect(spin, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this,
-        [this, name, spin](double value) {
-          const double shown = 0.5 * std::pow(10.0, -spin->decimals());
-          if (this->Pass &&
-            std::abs(vtkVoxelGISettings::GetValue(this->Pass, name.toUtf8().constData()) - value) < shown)
-          {
-            return;
-          }
-          this->apply(name, value);
-        });
+        [this, name, spin](double value) { this->applyShown(name, value, spin->decimals()); });
       control = spin;
     }
     control->setObjectName(name);
@@ -216,6 +206,17 @@ void vtkVoxelGISettingsWidget::apply(const QString& name, double value)
   }
   vtkVoxelGISettings::SetValue(this->Pass, name.toUtf8().constData(), value);
   Q_EMIT this->settingChanged(name, vtkVoxelGISettings::GetValue(this->Pass, name.toUtf8().constData()));
+}
+
+void vtkVoxelGISettingsWidget::applyShown(const QString& name, double value, int decimals)
+{
+  if (this->Pass &&
+    std::abs(vtkVoxelGISettings::GetValue(this->Pass, name.toUtf8().constData()) - value) <
+      0.5 * std::pow(10.0, -decimals))
+  {
+    return;
+  }
+  this->apply(name, value);
 }
 
 void vtkVoxelGISettingsWidget::updateControls()

@@ -59,6 +59,9 @@ Q_SIGNALS:
 
 private:
   void apply(const QString& name, double value);
+  /// apply() for a control that shows `decimals` decimals: a value finer than it shows
+  /// (0.0004 as 0.000) stays unless what is shown changes (Enter on an unedited control).
+  void applyShown(const QString& name, double value, int decimals);
 
   vtkVoxelGIPass* Pass = nullptr;
   // Observed, not owned: the viewer may delete its window before this widget.
