@@ -7,7 +7,13 @@
 #include "vtkObject.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkRenderPassCollection.h"
 #include "vtkSSAOPass.h"
+#include "vtkSequencePass.h"
+#include "vtkShadowMapBakerPass.h"
+#include "vtkShadowMapPass.h"
+
+#include <functional>
 
 namespace voxelgi
 {
@@ -64,8 +70,8 @@ bool Gate::Serve(vtkRenderPass* pass, vtkRenderer* renderer, bool& renewed)
   return true;
 }
 
-bool Gate::Admit(
-  vtkRenderPass* pass, vtkRenderPass* delegate, vtkRenderer* renderer, bool enabled)
+bool Gate::Admit(vtkRenderPass* pass, vtkRenderPass* delegate, vtkRenderer* renderer,
+  bool enabled, bool pixelShadows)
 {
   if (!delegate)
   {
@@ -77,8 +83,82 @@ bool Gate::Admit(
   this->Clear(NoDelegate);
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
   // Hardware picking renders through the pass too: it must see VTK's plain render steps.
-  return enabled && window && !renderer->GetSelector() && this->Combines(pass, delegate, renderer) &&
-    this->CheckContext(window);
+  const bool admitted = enabled && window && !renderer->GetSelector() &&
+    this->Combines(pass, delegate, renderer) && this->CheckContext(window);
+  if (admitted)
+  {
+    this->NoteShadowMapPass(pass, delegate, renderer, pixelShadows);
+  }
+  return admitted;
+}
+
+namespace
+{
+/// Whether `found` holds for a pass of the tree under `root` as VTK's pass classes show it:
+/// camera and image processing passes' delegates, sequences, a shadow map pass's opaque
+/// sequence and baker, and `pass`'s `delegate`.
+bool AnyPass(vtkRenderPass* root, vtkRenderPass* pass, vtkRenderPass* delegate,
+  const std::function<bool(vtkRenderPass*)>& found)
+{
+  if (!root)
+  {
+    return false;
+  }
+  if (found(root))
+  {
+    return true;
+  }
+  auto any = [&](vtkRenderPass* child) { return AnyPass(child, pass, delegate, found); };
+  if (root == pass)
+  {
+    return any(delegate);
+  }
+  if (auto* camera = vtkCameraPass::SafeDownCast(root))
+  {
+    return any(camera->GetDelegatePass());
+  }
+  if (auto* processing = vtkImageProcessingPass::SafeDownCast(root))
+  {
+    return any(processing->GetDelegatePass());
+  }
+  if (auto* shadows = vtkShadowMapPass::SafeDownCast(root))
+  {
+    return any(shadows->GetOpaqueSequence()) || any(shadows->GetShadowMapBakerPass());
+  }
+  if (auto* sequence = vtkSequencePass::SafeDownCast(root))
+  {
+    vtkRenderPassCollection* passes = sequence->GetPasses();
+    for (int i = 0; passes && i < passes->GetNumberOfItems(); ++i)
+    {
+      if (any(vtkRenderPass::SafeDownCast(passes->GetItemAsObject(i))))
+      {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+}
+
+void Gate::NoteShadowMapPass(
+  vtkRenderPass* pass, vtkRenderPass* delegate, vtkRenderer* renderer, bool pixelShadows)
+{
+  // Inside GI's delegate or around GI, a program's vtkShadowMapPass shades VTK's image with
+  // its own shadows; the composite removes the occluded light again from its own maps.
+  const bool both = pixelShadows &&
+    AnyPass(renderer->GetPass(), pass, delegate,
+      [](vtkRenderPass* p) { return vtkShadowMapPass::SafeDownCast(p) != nullptr; });
+  if (!both)
+  {
+    this->Clear(ShadowMapPass);
+    return;
+  }
+  this->Warning(ShadowMapPass,
+    "A vtkShadowMapPass is among the renderer's passes: its shadows stay in VTK's image and "
+    "GI's pixel shadows (ConeShadows) darken the same lights' shadows again, with slightly "
+    "different edges. Set ConeShadows off to keep VTK's shadows alone (GI adds indirect light "
+    "and AO), or set the GI pass in its place: GI's shadow maps cast every scene light's "
+    "shadows.");
 }
 
 bool Gate::Combines(vtkRenderPass* pass, vtkRenderPass* delegate, vtkRenderer* renderer)

@@ -52,6 +52,7 @@ public:
     NoDelegate,
     SharedPass,
     Combination,
+    ShadowMapPass,
     Unlit,
     Source,
     OtherRank,
@@ -70,8 +71,10 @@ public:
   bool Serve(vtkRenderPass* pass, vtkRenderer* renderer, bool& renewed);
   /// Whether GI can run with `delegate` in `renderer` this frame: a delegate (else said
   /// once), `enabled`, a GL window, not picking, the passes around this one hold GI, and
-  /// OpenGL 4.3.
-  bool Admit(vtkRenderPass* pass, vtkRenderPass* delegate, vtkRenderer* renderer, bool enabled);
+  /// OpenGL 4.3. `pixelShadows`: the pass darkens the lights' shadows in the pixels (said
+  /// once when a program's vtkShadowMapPass darkens them too).
+  bool Admit(vtkRenderPass* pass, vtkRenderPass* delegate, vtkRenderer* renderer, bool enabled,
+    bool pixelShadows);
   /// Whether the context has GL_NV_conservative_raster (checked with the context).
   bool HasConservativeRaster() const { return this->ConservativeRaster; }
   /// Whether a viewport of `width` x `height` fits GL's image size limits (said once a size).
@@ -90,6 +93,8 @@ public:
 
 private:
   bool Combines(vtkRenderPass* pass, vtkRenderPass* delegate, vtkRenderer* renderer);
+  void NoteShadowMapPass(vtkRenderPass* pass, vtkRenderPass* delegate, vtkRenderer* renderer,
+    bool pixelShadows);
   bool CheckContext(vtkRenderWindow* window);
 
   vtkObject* Owner;

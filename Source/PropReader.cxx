@@ -6,6 +6,8 @@
 #include "vtkAbstractVolumeMapper.h"
 #include "vtkActor.h"
 #include "vtkAssembly.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
 #include "vtkCullerCollection.h"
 #include "vtkDataSetMapper.h"
 #include "vtkFrustumCoverageCuller.h"
@@ -19,6 +21,7 @@
 #include "vtkOpenGLPolyDataMapper.h"
 #include "vtkPlane.h"
 #include "vtkPlaneCollection.h"
+#include "vtkPolyData.h"
 #include "vtkProp3DCollection.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
@@ -35,6 +38,57 @@ namespace voxelgi
 
 namespace
 {
+/// Whether `data` (a polydata, or a composite of them) holds no polygons or strips, only
+/// vertices and lines; other datasets have surfaces.
+bool PointsAndLinesOnly(vtkDataObject* data)
+{
+  if (auto* poly = vtkPolyData::SafeDownCast(data))
+  {
+    return poly->GetNumberOfPolys() + poly->GetNumberOfStrips() == 0;
+  }
+  auto* composite = vtkCompositeDataSet::SafeDownCast(data);
+  if (!composite)
+  {
+    return false;
+  }
+  vtkSmartPointer<vtkCompositeDataIterator> block;
+  block.TakeReference(composite->NewIterator());
+  for (block->InitTraversal(); !block->IsDoneWithTraversal(); block->GoToNextItem())
+  {
+    if (!PointsAndLinesOnly(block->GetCurrentDataObject()))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+/// Why an actor drawing `data` with `property` shows no area to voxelize (null: it does,
+/// or it draws plain points and lines, which take no light worth a notice): points and
+/// wireframes, and points and lines drawn as imposter spheres and tubes (no triangles).
+const char* NoAreaReason(vtkProperty* property, vtkDataObject* data)
+{
+  const int representation = property->GetRepresentation();
+  if (representation == VTK_SURFACE && !PointsAndLinesOnly(data))
+  {
+    return nullptr;
+  }
+  if (representation == VTK_POINTS)
+  {
+    return property->GetRenderPointsAsSpheres() ? "points drawn as spheres: imposters, no triangles"
+                                                : "points representation";
+  }
+  if (property->GetRenderLinesAsTubes())
+  {
+    return "lines drawn as tubes: imposters, no triangles";
+  }
+  if (property->GetRenderPointsAsSpheres() && representation == VTK_SURFACE)
+  {
+    return "points drawn as spheres: imposters, no triangles";
+  }
+  return representation == VTK_WIREFRAME ? "wireframe representation" : nullptr;
+}
+
 /// Why a visible prop with bounds is not voxelized (empty: it is): its class, and the reason.
 std::string LeftOutReason(vtkProp* prop)
 {
@@ -63,9 +117,10 @@ std::string LeftOutReason(vtkProp* prop)
     return std::string(prop->GetClassName()) + " with a " + mapper->GetClassName() +
       " (imposter spheres or sticks, no triangles)";
   }
-  if (actor->GetProperty()->GetRepresentation() != VTK_SURFACE)
+  const char* noArea = NoAreaReason(actor->GetProperty(), mapper->GetInputDataObject(0, 0));
+  if (noArea)
   {
-    return std::string(prop->GetClassName()) + " (points or wireframe representation)";
+    return std::string(prop->GetClassName()) + " (" + noArea + ")";
   }
   if (!actor->HasOpaqueGeometry())
   {

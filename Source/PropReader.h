@@ -1,12 +1,12 @@
 /**
  * PropReader: what the scan reads of each view prop every frame (its bounds, its signature,
- * whether it draws lines, why VTK renders it without GI), kept between frames. VTK's frustum
- * culler has already brought every visible prop's pipeline up to date before the render pass
- * runs (it asks each prop for its bounds); a plain actor whose signature is unchanged since
- * the last reading then has the bounds read then, and reading them again would update its
- * pipeline a second time, the largest cost of a camera-only frame with many actors. Other
- * props (followers turn with the camera, slices and volumes have their own bounds), and
- * renderers without that culler, are read in full every frame. GL-free.
+ * why VTK renders it without GI), kept between frames. VTK's frustum culler has already
+ * brought every visible prop's pipeline up to date before the render pass runs (it asks each
+ * prop for its bounds); a plain actor whose signature is unchanged since the last reading
+ * then has the bounds read then, and reading them again would update its pipeline a second
+ * time, the largest cost of a camera-only frame with many actors. Other props (followers
+ * turn with the camera, slices and volumes have their own bounds), and renderers without
+ * that culler, are read in full every frame. GL-free.
  */
 #ifndef VoxelGIPropReader_h
 #define VoxelGIPropReader_h

@@ -278,7 +278,8 @@ voxelgi::FramePlan& vtkVoxelGIPass::PlanVoxels(vtkRenderer* renderer, const vtkR
   this->GIActive = false;
   frame.State = s;
   frame.Renderer = renderer;
-  const bool admitted = in.Gate.Admit(this, this->DelegatePass, renderer, this->Enabled != 0);
+  const bool admitted = in.Gate.Admit(
+    this, this->DelegatePass, renderer, this->Enabled != 0, this->ConeShadows != 0);
   if (admitted)
   {
     in.Follower.Follow(vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow()));

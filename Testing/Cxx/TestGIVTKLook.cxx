@@ -3,7 +3,8 @@
 // default order-independent translucency), "peeling" (depth peeling), "volume" (a GPU
 // ray-cast volume), "overlay" (text): two intersecting translucent props over an opaque plane
 // with a line on it; case "msaa": the same in an 8x multisampled window, whose edges and line
-// keep VTK's anti-aliasing. In a scene where GI has nothing to add (indirect light, AO,
+// keep VTK's anti-aliasing; case "points": translucent point clouds coloured by RGBA
+// scalars, one drawn as spheres (as vedo's Points), in the 8x window. In a scene where GI has nothing to add (indirect light, AO,
 // shadow and specular cones off), against plain VTK in the same window: at most 0.5 % of the
 // pixels may differ by more than 3/255.
 #include "VoxelGITestUtilities.h"
@@ -21,6 +22,8 @@
 #include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
+#include "vtkPointSource.h"
+#include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkRenderWindow.h"
@@ -85,6 +88,33 @@ int TestGIVTKLook(int argc, char* argv[])
     volume->GetProperty()->SetScalarOpacityUnitDistance(0.05);
     renderer->AddVolume(volume);
   }
+  else if (which == "points")
+  {
+    for (int cloud = 0; cloud < 2; ++cloud)
+    {
+      vtkNew<vtkPointSource> source;
+      source->SetCenter(cloud ? 0.6 : -0.4, 0.7, 0.0);
+      source->SetRadius(0.6);
+      source->SetNumberOfPoints(400);
+      source->Update();
+      vtkPolyData* points = source->GetOutput();
+      vtkNew<vtkUnsignedCharArray> rgba;
+      rgba->SetNumberOfComponents(4);
+      for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+      {
+        rgba->InsertNextTuple4(255, (i * 37) % 256, 40, 60 + (i * 13) % 190);
+      }
+      points->GetPointData()->SetScalars(rgba);
+      vtkNew<vtkPolyDataMapper> mapper;
+      mapper->SetInputData(points);
+      mapper->SetColorModeToDirectScalars();
+      vtkNew<vtkActor> actor;
+      actor->SetMapper(mapper);
+      actor->GetProperty()->SetPointSize(7.0);
+      actor->GetProperty()->SetRenderPointsAsSpheres(cloud == 1);
+      renderer->AddActor(actor);
+    }
+  }
   else
   {
     vtkNew<vtkCubeSource> box;
@@ -115,7 +145,7 @@ int TestGIVTKLook(int argc, char* argv[])
   renderer->GetActiveCamera()->SetFocalPoint(0.0, 0.4, 0.0);
   renderer->ResetCameraClippingRange();
 
-  voxelgi_test::GIWindow view(renderer, 32, 200, which == "msaa" ? 8 : 0);
+  voxelgi_test::GIWindow view(renderer, 32, 200, which == "msaa" || which == "points" ? 8 : 0);
   vtkRenderWindow* window = view.Window;
   vtkVoxelGIPass* gi = view.GI;
   window->SetAlphaBitPlanes(1);

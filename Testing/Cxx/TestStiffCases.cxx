@@ -38,6 +38,11 @@
 #include "vtkRenderer.h"
 #include "vtkSphereSource.h"
 #include "vtkSSAOPass.h"
+#include "vtkSequencePass.h"
+#include "vtkShadowMapBakerPass.h"
+#include "vtkShadowMapPass.h"
+#include "vtkRenderPassCollection.h"
+#include "vtkCameraPass.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkOpenGLState.h"
@@ -61,22 +66,7 @@ namespace
 using glm::dvec3;
 using voxelgi_test::Bounded;
 
-// Collects the pass's warnings and errors (observed, so VTK does not print them).
-struct Messages
-{
-  std::string Text;
-  vtkNew<vtkCallbackCommand> Callback;
-  explicit Messages(vtkObject* object)
-  {
-    this->Callback->SetClientData(this);
-    this->Callback->SetCallback([](vtkObject*, unsigned long, void* client, void* data) {
-      static_cast<Messages*>(client)->Text += static_cast<const char*>(data);
-    });
-    object->AddObserver(vtkCommand::WarningEvent, this->Callback);
-    object->AddObserver(vtkCommand::ErrorEvent, this->Callback);
-  }
-  bool Has(const std::string& part) const { return this->Text.find(part) != std::string::npos; }
-};
+using voxelgi_test::Messages;
 
 // A scene: renderer, window, pass and message capture.
 struct Scene : voxelgi_test::GIWindow
@@ -691,6 +681,38 @@ const std::map<std::string, std::function<int()>>& Cases()
           VOXELGI_CHECK(MaxDifference(reference, pixels) == 0.0,
             "arrangement " << arrangement << " differs from vtkSSAOPass alone");
         }
+        return EXIT_SUCCESS;
+      } },
+    { "ShadowMapPassCombined",
+      [] {
+        // A program's shadows as vedo sets them (a camera pass around a sequence of
+        // vtkShadowMapPass's baker and the pass) as GI's delegate: GI runs, and says once
+        // that both draw the lights' shadows while ConeShadows is on; off, nothing is said.
+        Scene s;
+        vtkVoxelGIScenes::AddCornellBox(s.Renderer);
+        vtkNew<vtkShadowMapPass> shadows;
+        vtkNew<vtkRenderPassCollection> steps;
+        steps->AddItem(shadows->GetShadowMapBakerPass());
+        steps->AddItem(shadows);
+        vtkNew<vtkSequencePass> sequence;
+        sequence->SetPasses(steps);
+        vtkNew<vtkCameraPass> camera;
+        camera->SetDelegatePass(sequence);
+        s.GI->SetDelegatePass(camera);
+        s.Window->Render();
+        s.Window->Render();
+        std::cout << s.Log.Text << std::endl;
+        VOXELGI_CHECK(s.GI->GetGIActive(), "GI did not run");
+        const std::size_t first = s.Log.Text.find("A vtkShadowMapPass is among");
+        VOXELGI_CHECK(first != std::string::npos && s.Log.Has("Set ConeShadows off"),
+          "not said: " << s.Log.Text);
+        VOXELGI_CHECK(s.Log.Text.find("A vtkShadowMapPass", first + 1) == std::string::npos,
+          "said twice");
+        s.GI->SetConeShadows(false);
+        s.Log.Text.clear();
+        s.Window->Render();
+        VOXELGI_CHECK(s.GI->GetGIActive() && s.Log.Text.empty(), "with ConeShadows off: " << s.Log.Text);
+        VOXELGI_CHECK(Bounded(s.GI), "non-finite values");
         return EXIT_SUCCESS;
       } },
     { "ResizeEveryFrameAndRelease",

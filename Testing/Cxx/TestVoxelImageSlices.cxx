@@ -7,7 +7,6 @@
 #include "VoxelGITestUtilities.h"
 #include "vtkVoxelGIPass.h"
 
-#include "vtkCommand.h"
 #include "vtkImageActor.h"
 #include "vtkImageData.h"
 #include "vtkImageProperty.h"
@@ -17,7 +16,6 @@
 #include "vtkLight.h"
 #include "vtkLookupTable.h"
 #include "vtkNew.h"
-#include "vtkOutputWindow.h"
 #include "vtkPointData.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -25,21 +23,6 @@
 #include <cmath>
 #include <cstdlib>
 #include <string>
-
-namespace
-{
-// Collects the pass's warnings.
-class WarningText : public vtkCommand
-{
-public:
-  static WarningText* New() { return new WarningText; }
-  void Execute(vtkObject*, unsigned long, void* data) override
-  {
-    this->Text += static_cast<const char*>(data);
-  }
-  std::string Text;
-};
-}
 
 int TestVoxelImageSlices(int, char*[])
 {
@@ -96,15 +79,14 @@ int TestVoxelImageSlices(int, char*[])
   voxelgi_test::GIWindow view(renderer, 64, 64);
   vtkRenderWindow* window = view.Window;
   vtkVoxelGIPass* gi = view.GI;
-  vtkNew<WarningText> warnings;
-  gi->AddObserver(vtkCommand::WarningEvent, warnings);
+  voxelgi_test::Messages warnings(gi);
   renderer->ResetCamera();
   window->Render();
   VOXELGI_CHECK(gi->GetGIActive(), "GI did not run");
-  std::cout << "notice: " << warnings->Text << std::endl;
-  VOXELGI_CHECK(warnings->Text.find("vtkImageActor (translucent)") != std::string::npos,
+  std::cout << "notice: " << warnings.Text << std::endl;
+  VOXELGI_CHECK(warnings.Text.find("vtkImageActor (translucent)") != std::string::npos,
     "the translucent slice is not named");
-  VOXELGI_CHECK(warnings->Text.find("vtkImageSlice with a vtkImageResliceMapper") != std::string::npos,
+  VOXELGI_CHECK(warnings.Text.find("vtkImageSlice with a vtkImageResliceMapper") != std::string::npos,
     "the reslice mapper's slice is not named");
 
   vtkNew<vtkImageData> albedo;

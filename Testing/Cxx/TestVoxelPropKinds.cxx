@@ -10,8 +10,11 @@
 // shaders do not compile for it, and the pass's own renderers were unlit; and the voxels of a
 // surface with edges were black): the voxels keep the surface's red; case "tubes": the
 // same sphere as a plain actor next to a line drawn as a tube (RenderLinesAsTubes), whose
-// voxelization shader once failed to compile and crashed. The voxel at the sphere's side
-// holds its colour; the voxel where the sphere would be without its position is empty.
+// voxelization shader once failed to compile and crashed; case "spheres": next to a point
+// cloud drawn as spheres (RenderPointsAsSpheres, as vedo's Points). The voxel at the
+// sphere's side holds its colour; the voxel where the sphere would be without its position
+// is empty. Tubes and point spheres (imposters, no triangles) are left to VTK, named in the
+// notice, and leave their voxels empty.
 #include "VoxelGITestUtilities.h"
 #include "vtkVoxelGIPass.h"
 
@@ -29,6 +32,7 @@
 #include "vtkLineSource.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
+#include "vtkPointSource.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkQuadricLODActor.h"
@@ -39,6 +43,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <map>
 #include <string>
 
 int TestVoxelPropKinds(int argc, char* argv[])
@@ -95,6 +100,22 @@ int TestVoxelPropKinds(int argc, char* argv[])
     property->SetPointSize(6.0);
     property->SetVertexColor(0.1, 0.9, 0.1);
   }
+  else if (which == "spheres")
+  {
+    actor = vtkSmartPointer<vtkActor>::New();
+    vtkNew<vtkPointSource> cloud;
+    cloud->SetCenter(-1.0, 0.8, 0.0);
+    cloud->SetRadius(0.3);
+    cloud->SetNumberOfPoints(200);
+    vtkNew<vtkPolyDataMapper> cloudMapper;
+    cloudMapper->SetInputConnection(cloud->GetOutputPort());
+    vtkNew<vtkActor> points;
+    points->SetMapper(cloudMapper);
+    points->GetProperty()->SetRenderPointsAsSpheres(true);
+    points->GetProperty()->SetPointSize(8.0);
+    points->GetProperty()->SetColor(0.2, 0.3, 0.9);
+    renderer->AddActor(points);
+  }
   else
   {
     actor = vtkSmartPointer<vtkActor>::New();
@@ -138,6 +159,7 @@ int TestVoxelPropKinds(int argc, char* argv[])
   renderer->AddLight(light);
 
   voxelgi_test::GIWindow view(renderer, 64, 100);
+  voxelgi_test::Messages log(view.GI);
   vtkNew<vtkRenderWindowInteractor> interactor;
   interactor->SetRenderWindow(view.Window);
   renderer->GetActiveCamera()->SetPosition(2.0, 3.0, 5.0);
@@ -159,6 +181,21 @@ int TestVoxelPropKinds(int argc, char* argv[])
   VOXELGI_CHECK(side[0] > 200 && side[1] < 60 && side[2] < 60, which << ": not the sphere's red");
   const double* unmoved = voxel(0.29, 0.5, 0.0);
   VOXELGI_CHECK(unmoved[3] == 0, which << ": voxels where the sphere is without its position");
+  const std::map<std::string, std::string> named = { { "tubes", "lines drawn as tubes" },
+    { "spheres", "points drawn as spheres" } };
+  if (named.count(which))
+  {
+    std::cout << which << ": " << log.Text << std::endl;
+    VOXELGI_CHECK(log.Has("vtkOpenGLActor (" + named.at(which) + ": imposters, no triangles)"),
+      which << ": not named in the notice");
+    const double* imposters = voxel(which == "tubes" ? 0.0 : -1.0, which == "tubes" ? 0.4 : 0.8,
+      which == "tubes" ? -1.0 : 0.0);
+    VOXELGI_CHECK(imposters[3] == 0, which << ": voxels where the imposters are");
+  }
+  else
+  {
+    VOXELGI_CHECK(log.Text.empty() || which == "assembly", which << ": " << log.Text);
+  }
   if (which == "assembly")
   {
     view.Window->Render();

@@ -6,6 +6,7 @@
 
 #include "vtkActor.h"
 #include "vtkAlgorithm.h"
+#include "vtkCommand.h"
 #include "vtkCubeSource.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
@@ -289,6 +290,17 @@ void GIWindow::RenderWithoutGI()
   this->Renderer->SetPass(nullptr);
   this->Window->Render();
   this->Renderer->SetPass(this->GI);
+}
+
+//------------------------------------------------------------------------------
+Messages::Messages(vtkObject* object)
+{
+  this->Callback->SetClientData(this);
+  this->Callback->SetCallback([](vtkObject*, unsigned long, void* client, void* data) {
+    static_cast<Messages*>(client)->Text += static_cast<const char*>(data);
+  });
+  object->AddObserver(vtkCommand::WarningEvent, this->Callback);
+  object->AddObserver(vtkCommand::ErrorEvent, this->Callback);
 }
 
 void AddSphereAndBlockOnFloor(vtkRenderer* renderer)

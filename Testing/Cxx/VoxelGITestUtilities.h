@@ -2,6 +2,7 @@
 #ifndef VoxelGITestUtilities_h
 #define VoxelGITestUtilities_h
 
+#include "vtkCallbackCommand.h" // for Messages
 #include "vtkNew.h"          // for vtkNew
 #include "vtkRenderWindow.h" // for vtkNew
 #include "vtkRenderer.h"     // for vtkSmartPointer
@@ -69,6 +70,15 @@ struct GIWindow
   /// Renders VTK's own image of the renderer in this window: the pass is set aside for the
   /// frame.
   void RenderWithoutGI();
+};
+
+/// Collects an object's warnings and errors (observed, so VTK does not print them).
+struct Messages
+{
+  std::string Text;
+  vtkNew<vtkCallbackCommand> Callback;
+  explicit Messages(vtkObject* object);
+  bool Has(const std::string& part) const { return this->Text.find(part) != std::string::npos; }
 };
 
 /// Add an orange sphere and a blue block standing on a grey floor 6 units wide.
