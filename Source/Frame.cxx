@@ -1,12 +1,18 @@
 #include "Frame.h"
 
+#include "SoftwareProfile.h"
+
 namespace voxelgi
 {
 
-Settings Snapshot(vtkVoxelGIPassSettings* pass, bool hasConservativeRaster)
+Settings Snapshot(vtkVoxelGIPassSettings* pass, bool hasConservativeRaster, bool softwareProfile)
 {
   Settings c = SnapshotSettings(pass);
   c.HardwareConservativeRaster = c.HardwareConservativeRaster && hasConservativeRaster;
+  if (softwareProfile)
+  {
+    ApplySoftwareProfile(c);
+  }
   return c;
 }
 

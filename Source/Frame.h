@@ -36,8 +36,9 @@ class ShadowMaps;
 class VoxelMipmap;
 class VoxelizePass;
 
-/// The pass's settings now; HardwareConservativeRaster only where the context has it.
-Settings Snapshot(vtkVoxelGIPassSettings* pass, bool hasConservativeRaster);
+/// The pass's settings now; HardwareConservativeRaster only where the context has it, capped
+/// to the software profile where it applies.
+Settings Snapshot(vtkVoxelGIPassSettings* pass, bool hasConservativeRaster, bool softwareProfile);
 
 /// Which stages ran in a frame and, with timing on, their GPU (or, for the scan, CPU) time.
 class StageClock

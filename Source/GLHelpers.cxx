@@ -593,6 +593,12 @@ void ContextVersion(int& major, int& minor)
   minor = values[1];
 }
 
+std::string RendererName()
+{
+  const GLubyte* name = glGetString(GL_RENDERER);
+  return name ? reinterpret_cast<const char*>(name) : "";
+}
+
 bool HasExtension(const char* name)
 {
   GLint count = 0;

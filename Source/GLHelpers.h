@@ -282,6 +282,9 @@ void StoredSize(vtkTextureObject* texture, int& width, int& height);
 /// The current context's OpenGL version.
 void ContextVersion(int& major, int& minor);
 
+/// The current context's GL_RENDERER string.
+std::string RendererName();
+
 /// Whether the current context lists `name` among its extensions.
 bool HasExtension(const char* name);
 

@@ -1,6 +1,7 @@
 #include "Gate.h"
 
 #include "GLHelpers.h"
+#include "SoftwareProfile.h"
 
 #include "vtkCameraPass.h"
 #include "vtkImageProcessingPass.h"
@@ -215,6 +216,8 @@ bool Gate::CheckContext(vtkRenderWindow* window)
   this->CheckedWindow = window;
   this->ContextOk = major > 4 || (major == 4 && minor >= 3);
   this->ConservativeRaster = HasExtension("GL_NV_conservative_raster");
+  this->RendererName = voxelgi::RendererName();
+  this->SoftwareRenderer = voxelgi::IsSoftwareRenderer(this->RendererName);
   if (!this->ContextOk)
   {
     vtkErrorWithObjectMacro(this->Owner,
@@ -223,6 +226,20 @@ bool Gate::CheckContext(vtkRenderWindow* window)
       << major << "." << minor << ". Rendering without GI.");
   }
   return this->ContextOk;
+}
+
+bool Gate::SoftwareProfile(int profile)
+{
+  const bool applies = SoftwareProfileApplies(profile, this->SoftwareRenderer);
+  if (applies && profile == SOFTWARE_PROFILE_AUTO)
+  {
+    this->Warning(Software,
+      "OpenGL runs on the CPU here (" + this->RendererName +
+        "): GI runs in its software profile (at most 64^3 voxels, 4 cones traced at a quarter of "
+        "the resolution) to answer in about a second. Set SoftwareProfile to Off "
+        "for the full settings (tens of seconds a frame).");
+  }
+  return applies;
 }
 
 //------------------------------------------------------------------------------

@@ -53,6 +53,7 @@ public:
     SharedPass,
     Combination,
     ShadowMapPass,
+    Software,
     Unlit,
     Source,
     OtherRank,
@@ -77,6 +78,11 @@ public:
     bool pixelShadows);
   /// Whether the context has GL_NV_conservative_raster (checked with the context).
   bool HasConservativeRaster() const { return this->ConservativeRaster; }
+  /// Whether the context's renderer runs on the CPU (checked with the context).
+  bool IsSoftwareRenderer() const { return this->SoftwareRenderer; }
+  /// Whether the software profile applies with the setting `profile` (SOFTWARE_PROFILE_*);
+  /// chosen by AUTO, it is said once.
+  bool SoftwareProfile(int profile);
   /// Whether a viewport of `width` x `height` fits GL's image size limits (said once a size).
   bool ViewportFits(int width, int height);
 
@@ -103,6 +109,8 @@ private:
   bool ContextChecked = false;
   bool ContextOk = false;
   bool ConservativeRaster = false;
+  bool SoftwareRenderer = false;
+  std::string RendererName; // the context's GL_RENDERER
   vtkWeakPointer<vtkRenderWindow> CheckedWindow; // the window whose context was checked
   int RefusedSize[2] = { 0, 0 }; // the viewport size last refused as too large
   bool HasRefused = false;

@@ -3,6 +3,7 @@
 #include "Frame.h"
 #include "FramePlanner.h"
 #include "Gate.h"
+#include "SoftwareProfile.h"
 #include "ImageStages.h"
 #include "PropKeys.h"
 #include "Ranks.h"
@@ -161,7 +162,11 @@ unsigned long long vtkVoxelGIPass::GetAllocatedBytes(int resource) const
 
 unsigned long long vtkVoxelGIPass::GetRequiredVoxelMemoryBytes(bool emission)
 {
-  return voxelgi::VoxelMemoryNeed(emission, voxelgi::Snapshot(this, false)).Total();
+  return voxelgi::VoxelMemoryNeed(emission,
+    voxelgi::Snapshot(this, false,
+      voxelgi::SoftwareProfileApplies(
+        this->SoftwareProfile, this->Internal->Gate.IsSoftwareRenderer())))
+    .Total();
 }
 
 unsigned long long vtkVoxelGIPass::GetVoxelMemoryBytes() const
@@ -292,7 +297,8 @@ voxelgi::FramePlan& vtkVoxelGIPass::PlanVoxels(vtkRenderer* renderer, const vtkR
     frame.Mipmap = &in.Voxels.Mipmap;
     frame.Shadows = &in.Voxels.Shadows;
     renderer->GetTiledSizeAndOrigin(&frame.Width, &frame.Height, &frame.X, &frame.Y);
-    frame.Config = voxelgi::Snapshot(this, in.Gate.HasConservativeRaster());
+    frame.Config = voxelgi::Snapshot(
+      this, in.Gate.HasConservativeRaster(), in.Gate.SoftwareProfile(this->SoftwareProfile));
   }
   frame.Plan.GI = admitted && in.Gate.ViewportFits(frame.Width, frame.Height);
   if (!this->VoxelSource)

@@ -59,6 +59,7 @@ int main(int argc, char* argv[])
 
   vtkNew<vtkVoxelGIPass> gi;
   gi->SetVoxelResolution(128);
+  gi->SetSoftwareProfileToOff(); // a still image: the full settings, also on a CPU renderer
   gi->TimeStagesOn();
   renderer->SetPass(gi);
 

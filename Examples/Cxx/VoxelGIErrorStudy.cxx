@@ -166,6 +166,7 @@ int main(int argc, char* argv[])
     window->SetOffScreenRendering(true);
     window->AddRenderer(renderer);
     vtkNew<vtkVoxelGIPass> gi;
+    gi->SetSoftwareProfileToOff(); // the settings themselves, also on a CPU renderer
     vtkNew<vtkRenderStepsPass> steps;
     vtkNew<vtkSSAOPass> ssao;
     const bool usesPass = config.Name != "plain" && config.Name != "ssao";

@@ -278,6 +278,8 @@ GIWindow::GIWindow(vtkRenderer* renderer, int resolution, int size, int samples)
     this->Window->SetMultiSamples(samples);
   }
   this->Window->AddRenderer(this->Renderer);
+  // The tests measure the settings themselves, also where OpenGL runs on the CPU.
+  this->GI->SetSoftwareProfileToOff();
   if (resolution > 0)
   {
     this->GI->SetVoxelResolution(resolution);

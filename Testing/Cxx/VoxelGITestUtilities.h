@@ -58,7 +58,7 @@ double MeanOver(vtkFloatArray* image, int w, int x0, int y0, int x1, int y1, int
 int CornellRegressionTest(int argc, char* argv[], int debugView);
 
 /// The tests' window showing `renderer` (or, given none, a renderer of its own) through a
-/// pass of `resolution`^3 voxels (0: the pass's default): `size` x `size` pixels (200, the
+/// pass of `resolution`^3 voxels (0: the pass's default), its software profile off: `size` x `size` pixels (200, the
 /// image tests' size, by default), `samples` multisamples (negative: VTK's default).
 struct GIWindow
 {
