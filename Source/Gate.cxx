@@ -228,9 +228,14 @@ bool Gate::CheckContext(vtkRenderWindow* window)
   return this->ContextOk;
 }
 
+bool Gate::SoftwareProfileApplies(int profile) const
+{
+  return voxelgi::SoftwareProfileApplies(profile, this->SoftwareRenderer);
+}
+
 bool Gate::SoftwareProfile(int profile)
 {
-  const bool applies = SoftwareProfileApplies(profile, this->SoftwareRenderer);
+  const bool applies = this->SoftwareProfileApplies(profile);
   if (applies && profile == SOFTWARE_PROFILE_AUTO)
   {
     this->Warning(Software,

@@ -78,10 +78,10 @@ public:
     bool pixelShadows);
   /// Whether the context has GL_NV_conservative_raster (checked with the context).
   bool HasConservativeRaster() const { return this->ConservativeRaster; }
-  /// Whether the context's renderer runs on the CPU (checked with the context).
-  bool IsSoftwareRenderer() const { return this->SoftwareRenderer; }
-  /// Whether the software profile applies with the setting `profile` (SOFTWARE_PROFILE_*);
-  /// chosen by AUTO, it is said once.
+  /// Whether the software profile applies with the setting `profile` (SOFTWARE_PROFILE_*) on
+  /// the context checked last.
+  bool SoftwareProfileApplies(int profile) const;
+  /// SoftwareProfileApplies; chosen by AUTO, it is said once.
   bool SoftwareProfile(int profile);
   /// Whether a viewport of `width` x `height` fits GL's image size limits (said once a size).
   bool ViewportFits(int width, int height);

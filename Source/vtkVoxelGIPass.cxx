@@ -3,7 +3,6 @@
 #include "Frame.h"
 #include "FramePlanner.h"
 #include "Gate.h"
-#include "SoftwareProfile.h"
 #include "ImageStages.h"
 #include "PropKeys.h"
 #include "Ranks.h"
@@ -101,6 +100,11 @@ bool vtkVoxelGIPass::GetStageRan(int stage) const
   return this->Internal->Clock.Ran(stage);
 }
 
+bool vtkVoxelGIPass::GetSoftwareProfileActive() const
+{
+  return this->Internal->Gate.SoftwareProfileApplies(this->SoftwareProfile);
+}
+
 bool vtkVoxelGIPass::GetTraceReused() const
 {
   return this->GetStageRan(STAGE_CONE_TRACE) && this->Internal->Images.Trace.GetReused();
@@ -163,10 +167,7 @@ unsigned long long vtkVoxelGIPass::GetAllocatedBytes(int resource) const
 unsigned long long vtkVoxelGIPass::GetRequiredVoxelMemoryBytes(bool emission)
 {
   return voxelgi::VoxelMemoryNeed(emission,
-    voxelgi::Snapshot(this, false,
-      voxelgi::SoftwareProfileApplies(
-        this->SoftwareProfile, this->Internal->Gate.IsSoftwareRenderer())))
-    .Total();
+    voxelgi::Snapshot(this, false, this->GetSoftwareProfileActive())).Total();
 }
 
 unsigned long long vtkVoxelGIPass::GetVoxelMemoryBytes() const
@@ -489,6 +490,7 @@ void vtkVoxelGIPass::PrintSelf(ostream& os, vtkIndent indent)
   }
   os << indent << "VoxelSource: " << static_cast<void*>(this->VoxelSource) << "\n";
   os << indent << "GIActive: " << this->GIActive << "\n";
+  os << indent << "SoftwareProfileActive: " << this->GetSoftwareProfileActive() << "\n";
   const voxelgi::VoxelGrid grid = this->TracedVoxels().Grid;
   os << indent << "Grid: " << grid.Resolution << "^3 voxels of " << grid.VoxelSize << " from ("
      << grid.Origin.x << ", " << grid.Origin.y << ", " << grid.Origin.z << ")\n";

@@ -185,6 +185,12 @@ public:
   vtkGetMacro(GIActive, bool);
 
   /**
+   * True when the frames run in the software profile (SoftwareProfile ON, or AUTO on a
+   * context whose renderer runs on the CPU, as far as the last frame's context showed).
+   */
+  bool GetSoftwareProfileActive() const;
+
+  /**
    * The voxel grid of the last frame: voxels per axis (0 before the first voxelization),
    * world position of its minimum corner and voxel edge length.
    */

@@ -660,7 +660,8 @@ int main(int argc, char* argv[])
        << gi->GetBounces() << ", \"update_interval\": " << o.UpdateInterval
        << ", \"frames\": " << o.Frames << ", \"viewports\": " << o.Viewports
        << ", \"shared_grid\": " << (o.SharedGrid ? "true" : "false")
-       << ", \"voxel_memory_bytes\": " << voxelBytes << ", \"settings\": {";
+       << ", \"voxel_memory_bytes\": " << voxelBytes << ", \"software_profile\": "
+       << (gi->GetSoftwareProfileActive() ? "true" : "false") << ", \"settings\": {";
   for (size_t i = 0; i < o.Settings.size(); ++i)
   {
     json << (i ? ", " : "") << "\"" << o.Settings[i].first << "\": " << o.Settings[i].second;
@@ -669,7 +670,8 @@ int main(int argc, char* argv[])
   std::cout << std::fixed << std::setprecision(2) << "\nmedian ms on " << RendererName(window)
             << ", " << o.Scene << " (" << actors.size() << " actors, " << triangles
             << " triangles) " << o.Width << "x" << o.Height << ", " << o.Resolution
-            << "^3 voxels, trace at " << o.TraceScale << ", " << window->GetMultiSamples()
+            << "^3 voxels, trace at " << o.TraceScale
+            << (gi->GetSoftwareProfileActive() ? " (capped by the software profile)" : "") << ", " << window->GetMultiSamples()
             << "x MSAA, " << o.Frames << " frames, " << o.Viewports << " viewport(s)"
             << (o.SharedGrid ? " sharing one grid" : "") << ", voxel memory "
             << voxelBytes / (1024 * 1024) << " MiB\n"

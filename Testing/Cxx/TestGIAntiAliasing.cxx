@@ -222,6 +222,7 @@ int TestGIAntiAliasing(int argc, char* argv[])
               << std::endl;
     VOXELGI_CHECK(off <= 2, "the image differs from plain VTK's FXAA image");
     vtkNew<vtkVoxelGIPass> defaults;
+    defaults->SetSoftwareProfileToOff();
     defaults->SetVoxelResolution(64);
     renderer->SetPass(defaults);
     window->Render();
@@ -274,6 +275,7 @@ int TestGIAntiAliasing(int argc, char* argv[])
     VOXELGI_CHECK(draws > 0, "a new sample count presented the old copy");
     auto resampled = Pixels(window);
     vtkNew<vtkVoxelGIPass> fresh;
+    fresh->SetSoftwareProfileToOff();
     fresh->SetVoxelResolution(64);
     renderer->SetPass(fresh);
     window->Render();

@@ -103,6 +103,7 @@ int TestGIOverlays(int argc, char* argv[])
     renderer->GetActiveCamera()->SetPosition(1.0, 2.0, 4.0);
     renderer->ResetCamera();
     passes[i] = vtkSmartPointer<vtkVoxelGIPass>::New();
+    passes[i]->SetSoftwareProfileToOff();
     passes[i]->SetVoxelResolution(32);
     passes[i]->SetIndirectIntensity(0.0);
     passes[i]->SetAmbientOcclusionStrength(0.0);

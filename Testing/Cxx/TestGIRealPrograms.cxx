@@ -101,6 +101,7 @@ int Viewports(int argc, char* argv[])
       renderers[i]->ResetCameraClippingRange();
     }
     passes[i] = vtkSmartPointer<vtkVoxelGIPass>::New();
+    passes[i]->SetSoftwareProfileToOff();
     passes[i]->SetVoxelResolution(32);
     renderers[i]->SetPass(passes[i]);
     window->AddRenderer(renderers[i]);

@@ -72,6 +72,7 @@ double DifferenceFromFullRecompute(vtkRenderer* renderer, vtkRenderWindow* windo
   vtkNew<vtkFloatArray> incremental;
   gi->GetFloatImage(vtkVoxelGIPass::IMAGE_COMPOSITE, incremental);
   vtkNew<vtkVoxelGIPass> fresh;
+  fresh->SetSoftwareProfileToOff();
   fresh->SetVoxelResolution(gi->GetVoxelResolution());
   renderer->SetPass(fresh);
   window->Render();

@@ -715,6 +715,45 @@ const std::map<std::string, std::function<int()>>& Cases()
         VOXELGI_CHECK(Bounded(s.GI), "non-finite values");
         return EXIT_SUCCESS;
       } },
+    { "SoftwareRenderer",
+      [] {
+        // The software profile chosen by Auto where the context's renderer runs on the CPU
+        // (CI's llvmpipe), said once: a 128^3 setting voxelizes at 64^3. On a GPU nothing
+        // is said and 128^3 stays. On, the profile caps on any renderer.
+        Scene s;
+        vtkVoxelGIScenes::AddCornellBox(s.Renderer);
+        s.GI->SetSoftwareProfileToAuto();
+        s.GI->SetVoxelResolution(128);
+        s.Window->Render();
+        const std::string capabilities = s.Window->ReportCapabilities();
+        const bool cpu = capabilities.find("llvmpipe") != std::string::npos ||
+          capabilities.find("softpipe") != std::string::npos;
+        s.Window->Render();
+        auto dimension = [&] {
+          vtkNew<vtkImageData> albedo;
+          return s.GI->GetVoxelVolume(vtkVoxelGIPass::VOLUME_ALBEDO, albedo)
+            ? albedo->GetDimensions()[0]
+            : 0;
+        };
+        const std::size_t first = s.Log.Text.find("OpenGL runs on the CPU here");
+        std::cout << (cpu ? "CPU renderer: " : "GPU renderer: ") << s.Log.Text << std::endl;
+        VOXELGI_CHECK(s.GI->GetGIActive(), "GI did not run");
+        VOXELGI_CHECK(dimension() == (cpu ? 64 : 128), "grid of " << dimension());
+        VOXELGI_CHECK(cpu ? first != std::string::npos &&
+              s.Log.Text.find("OpenGL runs on the CPU", first + 1) == std::string::npos
+                          : s.Log.Text.empty(),
+          "said: " << s.Log.Text);
+        s.GI->SetSoftwareProfileToOn();
+        s.GI->SetVoxelResolution(96);
+        s.Window->Render();
+        VOXELGI_CHECK(dimension() == 64, "On: grid of " << dimension());
+        s.GI->SetSoftwareProfileToOff();
+        s.GI->SetVoxelResolution(32);
+        s.Log.Text.clear();
+        s.Window->Render();
+        VOXELGI_CHECK(dimension() == 32 && s.Log.Text.empty(), "Off: grid of " << dimension());
+        return EXIT_SUCCESS;
+      } },
     { "ResizeEveryFrameAndRelease",
       [] {
         Scene s;
@@ -749,6 +788,7 @@ const std::map<std::string, std::function<int()>>& Cases()
         s.Window->SetNumberOfLayers(2);
         s.Window->AddRenderer(overlay);
         vtkNew<vtkVoxelGIPass> second;
+        second->SetSoftwareProfileToOff();
         second->SetVoxelResolution(16);
         overlay->SetPass(second);
         Scene other; // and a second window
@@ -779,6 +819,7 @@ const std::map<std::string, std::function<int()>>& Cases()
         vtkVoxelGIScenes::AddCornellBox(renderer);
         a.Window->AddRenderer(renderer);
         auto pass = vtkSmartPointer<vtkVoxelGIPass>::New();
+        pass->SetSoftwareProfileToOff();
         renderer->SetPass(pass);
         renderer->ResetCamera();
         a.Window->Render();
@@ -847,6 +888,8 @@ const std::map<std::string, std::function<int()>>& Cases()
         VOXELGI_CHECK(s.Log.Has("cannot share its own voxels") && !s.GI->GetVoxelSource(),
           "self accepted: " << s.Log.Text);
         vtkNew<vtkVoxelGIPass> middle, last;
+        middle->SetSoftwareProfileToOff();
+        last->SetSoftwareProfileToOff();
         Messages lastLog(last);
         middle->SetVoxelSource(s.GI);
         last->SetVoxelSource(middle);
@@ -907,6 +950,7 @@ const std::map<std::string, std::function<int()>>& Cases()
         vtkNew<vtkImageData> after;
         VOXELGI_CHECK(s.GI->GetVoxelVolume(vtkVoxelGIPass::VOLUME_ALBEDO, after), "no albedo");
         vtkNew<vtkVoxelGIPass> fresh;
+        fresh->SetSoftwareProfileToOff();
         fresh->SetVoxelResolution(32);
         s.Renderer->SetPass(fresh);
         s.Window->Render();
@@ -944,6 +988,7 @@ const std::map<std::string, std::function<int()>>& Cases()
         two.Render();
         vtkSmartPointer<vtkFloatArray> expected[2] = { Composite(one.GI), Composite(two.GI) };
         vtkNew<vtkVoxelGIPass> shared;
+        shared->SetSoftwareProfileToOff();
         shared->SetVoxelResolution(32);
         one.Renderer->SetPass(shared);
         two.Renderer->SetPass(shared);

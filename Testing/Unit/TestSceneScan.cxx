@@ -251,8 +251,8 @@ TEST_F(ScanFixture, TranslucentAndWireframeAreLeftOutWithNoticesThatCount)
   EXPECT_EQ(this->Scan.GetRecords().size(), 1u);
   ASSERT_EQ(this->Messages.Warnings.size(), 1u);
   EXPECT_EQ(this->Messages.Warnings[0],
-    "Rendered by VTK without voxel GI: 1 x vtkOpenGLActor (points or wireframe representation); "
-    "1 x vtkOpenGLActor (translucent).");
+    "Rendered by VTK without voxel GI: 1 x vtkOpenGLActor (translucent); "
+    "1 x vtkOpenGLActor (wireframe representation).");
   ASSERT_TRUE(this->Next());
   EXPECT_TRUE(this->Messages.Warnings.empty()); // said once
   AddSphere(this->Renderer, 6.0)->GetProperty()->SetOpacity(0.2);
