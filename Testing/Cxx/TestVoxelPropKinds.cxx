@@ -8,10 +8,13 @@
 // traces again; case "edges": the sphere as a plain actor with green edges drawn as tubes and
 // green vertices as spheres (as VTK's TestCompositePolyDataMapper2Vertices: VTK 9.1's unlit
 // shaders do not compile for it, and the pass's own renderers were unlit; and the voxels of a
-// surface with edges were black): the voxels keep the surface's red; case "tubes": the
-// same sphere as a plain actor next to a line drawn as a tube (RenderLinesAsTubes), whose
-// voxelization shader once failed to compile and crashed; case "spheres": next to a point
-// cloud drawn as spheres (RenderPointsAsSpheres, as vedo's Points). The voxel at the
+// surface with edges were black): the voxels keep the surface's red; case "composite": the
+// same drawn by a vtkCompositePolyDataMapper2 from a multiblock, as that VTK test; case
+// "tubes": the same sphere as a plain actor next to a line drawn as a tube
+// (RenderLinesAsTubes), whose voxelization shader once failed to compile and crashed; case "spheres": next to a point
+// cloud drawn as spheres (RenderPointsAsSpheres, as vedo's Points); case "widget": next to
+// an implicit plane widget (a cutter's), left to VTK: an unchanged frame only presents,
+// moving the plane draws again. The voxel at the
 // sphere's side holds its colour; the voxel where the sphere would be without its position
 // is empty. Tubes and point spheres (imposters, no triangles) are left to VTK, named in the
 // notice, and leave their voxels empty.
@@ -22,14 +25,18 @@
 #include "vtkAppendFilter.h"
 #include "vtkAssembly.h"
 #include "vtkCamera.h"
+#include "vtkCompositePolyDataMapper2.h"
 #include "vtkCubeSource.h"
 #include "vtkDataArray.h"
 #include "vtkDataSetMapper.h"
 #include "vtkFollower.h"
 #include "vtkImageData.h"
+#include "vtkImplicitPlaneRepresentation.h"
+#include "vtkImplicitPlaneWidget2.h"
 #include "vtkLODActor.h"
 #include "vtkLight.h"
 #include "vtkLineSource.h"
+#include "vtkMultiBlockDataSet.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPointSource.h"
@@ -64,6 +71,16 @@ int TestVoxelPropKinds(int argc, char* argv[])
     mapper = vtkSmartPointer<vtkDataSetMapper>::New();
     mapper->SetInputConnection(grid->GetOutputPort());
   }
+  else if (which == "composite")
+  {
+    // VTK's TestCompositePolyDataMapper2Vertices: blocks drawn with their vertices as spheres
+    ball->Update();
+    vtkNew<vtkMultiBlockDataSet> blocks;
+    blocks->SetNumberOfBlocks(1);
+    blocks->SetBlock(0, ball->GetOutput());
+    mapper = vtkSmartPointer<vtkCompositePolyDataMapper2>::New();
+    mapper->SetInputDataObject(blocks);
+  }
   else
   {
     mapper->SetInputConnection(ball->GetOutputPort());
@@ -83,11 +100,11 @@ int TestVoxelPropKinds(int argc, char* argv[])
   {
     actor = vtkSmartPointer<vtkQuadricLODActor>::New();
   }
-  else if (which == "dataset" || which == "assembly")
+  else if (which == "dataset" || which == "assembly" || which == "widget")
   {
     actor = vtkSmartPointer<vtkActor>::New();
   }
-  else if (which == "edges")
+  else if (which == "edges" || which == "composite")
   {
     actor = vtkSmartPointer<vtkActor>::New();
     vtkProperty* property = actor->GetProperty();
@@ -162,6 +179,17 @@ int TestVoxelPropKinds(int argc, char* argv[])
   voxelgi_test::Messages log(view.GI);
   vtkNew<vtkRenderWindowInteractor> interactor;
   interactor->SetRenderWindow(view.Window);
+  vtkNew<vtkImplicitPlaneRepresentation> plane;
+  vtkNew<vtkImplicitPlaneWidget2> widget;
+  if (which == "widget")
+  {
+    double box[6] = { -1.5, 1.5, 0.0, 1.0, -1.5, 1.5 };
+    plane->PlaceWidget(box);
+    plane->SetNormal(1.0, 0.0, 0.0);
+    widget->SetInteractor(interactor);
+    widget->SetRepresentation(plane);
+    widget->On();
+  }
   renderer->GetActiveCamera()->SetPosition(2.0, 3.0, 5.0);
   renderer->ResetCamera();
   view.Window->Render();
@@ -194,18 +222,26 @@ int TestVoxelPropKinds(int argc, char* argv[])
   }
   else
   {
-    VOXELGI_CHECK(log.Text.empty() || which == "assembly", which << ": " << log.Text);
+    VOXELGI_CHECK(log.Text.empty() || which == "assembly" || which == "widget",
+      which << ": " << log.Text);
   }
-  if (which == "assembly")
+  if (which == "assembly" || which == "widget")
   {
     view.Window->Render();
     const std::string unchanged = voxelgi_test::StagesRan(view.GI);
-    outer->SetPosition(-1.0, 0.0, 0.2);
+    if (which == "widget")
+    {
+      plane->SetOrigin(0.3, 0.5, 0.0);
+    }
+    else
+    {
+      outer->SetPosition(-1.0, 0.0, 0.2);
+    }
     view.Window->Render();
     const std::string moved = voxelgi_test::StagesRan(view.GI);
-    std::cout << "unchanged frame: " << unchanged << "; assembly moved: " << moved << std::endl;
-    VOXELGI_CHECK(unchanged == "Scan,Present", "an unchanged frame with an assembly traced again");
-    VOXELGI_CHECK(moved.find("GBuffer") != std::string::npos, "a moved assembly was not traced");
+    std::cout << "unchanged frame: " << unchanged << "; moved: " << moved << std::endl;
+    VOXELGI_CHECK(unchanged == "Scan,Present", which << ": an unchanged frame traced again");
+    VOXELGI_CHECK(moved.find("GBuffer") != std::string::npos, which << ": moved, not drawn again");
   }
   return EXIT_SUCCESS;
 }
