@@ -11,10 +11,7 @@
 #include "vtkRenderPassCollection.h"
 #include "vtkSSAOPass.h"
 #include "vtkSequencePass.h"
-#include "vtkShadowMapBakerPass.h"
 #include "vtkShadowMapPass.h"
-
-#include <functional>
 
 namespace voxelgi
 {
@@ -95,46 +92,35 @@ bool Gate::Admit(vtkRenderPass* pass, vtkRenderPass* delegate, vtkRenderer* rend
 
 namespace
 {
-/// Whether `found` holds for a pass of the tree under `root` as VTK's pass classes show it:
-/// camera and image processing passes' delegates, sequences, a shadow map pass's opaque
-/// sequence and baker, and `pass`'s `delegate`.
-bool AnyPass(vtkRenderPass* root, vtkRenderPass* pass, vtkRenderPass* delegate,
-  const std::function<bool(vtkRenderPass*)>& found)
+/// Whether the tree of passes under `root`, as VTK's pass classes show it (camera and image
+/// processing passes' delegates, sequences, and `pass`'s `delegate`), holds a
+/// vtkShadowMapPass.
+bool HasShadowMapPass(vtkRenderPass* root, vtkRenderPass* pass, vtkRenderPass* delegate)
 {
-  if (!root)
+  auto below = [&](vtkRenderPass* child) { return HasShadowMapPass(child, pass, delegate); };
+  if (!root || vtkShadowMapPass::SafeDownCast(root))
   {
-    return false;
+    return root != nullptr;
   }
-  if (found(root))
-  {
-    return true;
-  }
-  auto any = [&](vtkRenderPass* child) { return AnyPass(child, pass, delegate, found); };
   if (root == pass)
   {
-    return any(delegate);
+    return below(delegate);
   }
   if (auto* camera = vtkCameraPass::SafeDownCast(root))
   {
-    return any(camera->GetDelegatePass());
+    return below(camera->GetDelegatePass());
   }
   if (auto* processing = vtkImageProcessingPass::SafeDownCast(root))
   {
-    return any(processing->GetDelegatePass());
+    return below(processing->GetDelegatePass());
   }
-  if (auto* shadows = vtkShadowMapPass::SafeDownCast(root))
+  auto* sequence = vtkSequencePass::SafeDownCast(root);
+  vtkRenderPassCollection* passes = sequence ? sequence->GetPasses() : nullptr;
+  for (int i = 0; passes && i < passes->GetNumberOfItems(); ++i)
   {
-    return any(shadows->GetOpaqueSequence()) || any(shadows->GetShadowMapBakerPass());
-  }
-  if (auto* sequence = vtkSequencePass::SafeDownCast(root))
-  {
-    vtkRenderPassCollection* passes = sequence->GetPasses();
-    for (int i = 0; passes && i < passes->GetNumberOfItems(); ++i)
+    if (below(vtkRenderPass::SafeDownCast(passes->GetItemAsObject(i))))
     {
-      if (any(vtkRenderPass::SafeDownCast(passes->GetItemAsObject(i))))
-      {
-        return true;
-      }
+      return true;
     }
   }
   return false;
@@ -146,9 +132,7 @@ void Gate::NoteShadowMapPass(
 {
   // Inside GI's delegate or around GI, a program's vtkShadowMapPass shades VTK's image with
   // its own shadows; the composite removes the occluded light again from its own maps.
-  const bool both = pixelShadows &&
-    AnyPass(renderer->GetPass(), pass, delegate,
-      [](vtkRenderPass* p) { return vtkShadowMapPass::SafeDownCast(p) != nullptr; });
+  const bool both = pixelShadows && HasShadowMapPass(renderer->GetPass(), pass, delegate);
   if (!both)
   {
     this->Clear(ShadowMapPass);
