@@ -711,7 +711,8 @@ const std::map<std::string, std::function<int()>>& Cases()
         s.GI->SetConeShadows(false);
         s.Log.Text.clear();
         s.Window->Render();
-        VOXELGI_CHECK(s.GI->GetGIActive() && s.Log.Text.empty(), "with ConeShadows off: " << s.Log.Text);
+        VOXELGI_CHECK(
+          s.GI->GetGIActive() && s.Log.Text.empty(), "with ConeShadows off: " << s.Log.Text);
         VOXELGI_CHECK(Bounded(s.GI), "non-finite values");
         return EXIT_SUCCESS;
       } },

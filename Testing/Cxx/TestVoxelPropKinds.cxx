@@ -20,6 +20,7 @@
 // notice, and leave their voxels empty.
 #include "VoxelGITestUtilities.h"
 #include "vtkVoxelGIPass.h"
+#include "vtkVoxelGIScenes.h"
 
 #include "vtkActor.h"
 #include "vtkAppendFilter.h"
@@ -124,14 +125,10 @@ int TestVoxelPropKinds(int argc, char* argv[])
     cloud->SetCenter(-1.0, 0.8, 0.0);
     cloud->SetRadius(0.3);
     cloud->SetNumberOfPoints(200);
-    vtkNew<vtkPolyDataMapper> cloudMapper;
-    cloudMapper->SetInputConnection(cloud->GetOutputPort());
-    vtkNew<vtkActor> points;
-    points->SetMapper(cloudMapper);
-    points->GetProperty()->SetRenderPointsAsSpheres(true);
-    points->GetProperty()->SetPointSize(8.0);
-    points->GetProperty()->SetColor(0.2, 0.3, 0.9);
-    renderer->AddActor(points);
+    vtkProperty* points =
+      vtkVoxelGIScenes::AddSource(renderer, cloud, 0.2, 0.3, 0.9)->GetProperty();
+    points->SetRenderPointsAsSpheres(true);
+    points->SetPointSize(8.0);
   }
   else
   {
@@ -140,14 +137,9 @@ int TestVoxelPropKinds(int argc, char* argv[])
     line->SetPoint1(-1.5, 0.4, -1.0);
     line->SetPoint2(1.5, 0.4, -1.0);
     line->SetResolution(8);
-    vtkNew<vtkPolyDataMapper> lineMapper;
-    lineMapper->SetInputConnection(line->GetOutputPort());
-    vtkNew<vtkActor> tube;
-    tube->SetMapper(lineMapper);
-    tube->GetProperty()->SetRenderLinesAsTubes(true);
-    tube->GetProperty()->SetLineWidth(6.0);
-    tube->GetProperty()->SetColor(0.2, 0.3, 0.9);
-    renderer->AddActor(tube);
+    vtkProperty* tube = vtkVoxelGIScenes::AddSource(renderer, line, 0.2, 0.3, 0.9)->GetProperty();
+    tube->SetRenderLinesAsTubes(true);
+    tube->SetLineWidth(6.0);
   }
   actor->SetMapper(mapper);
   actor->SetPosition(1.0, 0.5, 0.0);

@@ -6,6 +6,7 @@ than 12 levels in a channel or the mean difference exceeds 0.5 levels, as the C+
 import numpy
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkIOImage import vtkPNGReader
+from vtkmodules.vtkTestingRendering import vtkTesting
 
 
 def rgb(path):
@@ -28,3 +29,16 @@ def differs(baseline, rendered):
     if mean > 0.5 or over > 0.001:
         return "%s differs from %s (VTK's threshold hid it)" % (rendered, baseline)
     return None
+
+
+def mismatch(baseline, rendered, output_dir):
+    """None when `rendered` matches `baseline` through vtkTesting (which writes the test and
+    difference images to `output_dir` when it fails) and strictly, else what differs."""
+    reader = vtkPNGReader()
+    reader.SetFileName(rendered)
+    testing = vtkTesting()
+    for arg in ("-V", baseline, "-T", output_dir):
+        testing.AddArgument(arg)
+    if testing.RegressionTest(reader, 10.0) != vtkTesting.PASSED:
+        return "%s does not match %s (see %s)" % (rendered, baseline, output_dir)
+    return differs(baseline, rendered)
