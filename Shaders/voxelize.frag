@@ -1,11 +1,9 @@
 // Voxelization fragment code, inserted by vtkVoxelGIPass into VTK's polydata fragment shader
 // (before main); main ends with voxelWrite(<the colour VTK computed, unlit>).
-#include "voxel_common.glsl"
+#include "voxel_triangle.glsl"
+#include "voxel_write.glsl"
 
-uniform int voxelStaticPass;  // 1: marks the flag volume; 0: dynamic, leaves static voxels alone
-uniform vec3 voxelEmission;   // this actor's emitted radiance (finite, non-negative)
-layout(r8ui, binding = VOXELGI_FLAG_IMAGE_UNIT) uniform uimage3D voxelFlag;
-
+// The triangle, from voxelize.geom.
 flat in int voxelAxis;
 flat in vec4 voxelBox;
 flat in vec3 voxelPlane;
@@ -15,81 +13,9 @@ flat in vec3 voxelEdge1;
 flat in vec3 voxelEdge2;
 flat in vec3 voxelFaceNormal;
 
-const float voxelEps = 1e-3;
-
-// Does the pixel square centred on c reach the inside of this edge's half plane?
-bool voxelEdgeReaches(vec3 e, vec2 c)
-{
-  return dot(e.xy, c) + e.z <= 0.5 * (abs(e.x) + abs(e.y)) + voxelEps * length(e.xy);
-}
-
-ivec3 voxelUnswizzle(ivec3 q)
-{
-  return voxelAxis == 0 ? q.zxy : (voxelAxis == 1 ? q.yzx : q);
-}
-
-void voxelStore(ivec3 v, vec4 color)
-{
-  if (voxelStaticPass != 0)
-  {
-    imageStore(voxelFlag, v, uvec4(1u));
-  }
-  else if (imageLoad(voxelFlag, v).r != 0u)
-  {
-    return;
-  }
-  int i = voxelIndex(v);
-  vec3 n = voxelFaceNormal * 0.5 + 0.5;
-  atomicAdd(voxelCount[i], 1u);
-  atomicAdd(voxelAlbedoR[i], voxelQuantize(color.r));
-  atomicAdd(voxelAlbedoG[i], voxelQuantize(color.g));
-  atomicAdd(voxelAlbedoB[i], voxelQuantize(color.b));
-  atomicAdd(voxelNormalX[i], voxelQuantize(n.x));
-  atomicAdd(voxelNormalY[i], voxelQuantize(n.y));
-  atomicAdd(voxelNormalZ[i], voxelQuantize(n.z));
-#if VOXEL_CHANNELS > VOXELGI_BASE_CHANNELS
-  vec3 e = clamp(voxelEmission, 0.0, VOXELGI_HALF_MAX);
-  if (any(greaterThan(e, vec3(0.0))))
-  {
-    atomicMax(voxelEmissionR[i], floatBitsToUint(e.r));
-    atomicMax(voxelEmissionG[i], floatBitsToUint(e.g));
-    atomicMax(voxelEmissionB[i], floatBitsToUint(e.b));
-    atomicAdd(voxelEmissionCount[i], 1u);
-  }
-#endif
-}
-
-// Writes every voxel of this pixel's column that the triangle may touch: the pixel square
-// must overlap the triangle's projection (bounding box and the three edges), and the voxel's
-// depth interval must meet the triangle plane's depth over the square, within the triangle's
-// depth range. A superset of the exact triangle/box overlap, so no touched voxel is missed.
 void voxelWrite(vec4 color)
 {
-  vec2 c = floor(gl_FragCoord.xy) + 0.5;
-  if (any(lessThan(c + 0.5 + voxelEps, voxelBox.xy)) ||
-    any(greaterThan(c - 0.5 - voxelEps, voxelBox.zw)))
-  {
-    return;
-  }
-  if (!voxelEdgeReaches(voxelEdge0, c) || !voxelEdgeReaches(voxelEdge1, c) ||
-    !voxelEdgeReaches(voxelEdge2, c))
-  {
-    return;
-  }
-  float zc = dot(voxelPlane.xy, c) + voxelPlane.z;
-  float dz = 0.5 * (abs(voxelPlane.x) + abs(voxelPlane.y));
-  float zlo = max(zc - dz, voxelDepthRange.x) - voxelEps;
-  float zhi = min(zc + dz, voxelDepthRange.y) + voxelEps;
-  ivec2 xy = ivec2(c);
-  if (any(lessThan(xy, ivec2(0))) || any(greaterThanEqual(xy, ivec2(voxelResolution))))
-  {
-    return;
-  }
-  int k0 = max(int(floor(zlo)), 0);
-  int k1 = min(int(floor(zhi)), voxelResolution - 1);
-  // The dominant-axis projection bounds the depth slope by 1 per axis: at most 3 voxels.
-  for (int k = k0; k <= k1 && k <= k0 + 3; ++k)
-  {
-    voxelStore(voxelUnswizzle(ivec3(xy, k)), color);
-  }
+  VoxelTriangle t = VoxelTriangle(voxelAxis, voxelBox, voxelPlane, voxelDepthRange, voxelEdge0,
+    voxelEdge1, voxelEdge2, voxelFaceNormal);
+  voxelWriteColumn(t, floor(gl_FragCoord.xy) + 0.5, color);
 }

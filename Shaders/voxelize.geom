@@ -32,33 +32,20 @@ layout(triangles) in;
 layout(triangle_strip, max_vertices = 3) out;
 
 #include "voxel_grid.glsl"
+#include "voxel_triangle.glsl"
 uniform int voxelDilate;       // 0 when the hardware rasterizes conservatively
 
-flat out int voxelAxis;        // 0: x, 1: y, 2: z dominant
-flat out vec4 voxelBox;        // triangle bounds in the projected plane (voxel units)
-flat out vec3 voxelPlane;      // depth plane: z' = a x' + b y' + c
-flat out vec2 voxelDepthRange; // triangle's depth range
-flat out vec3 voxelEdge0;      // edge functions n.x x + n.y y + d, inside <= 0
+// The triangle (voxel_triangle.glsl) for the fragment stage.
+flat out int voxelAxis;
+flat out vec4 voxelBox;
+flat out vec3 voxelPlane;
+flat out vec2 voxelDepthRange;
+flat out vec3 voxelEdge0;
 flat out vec3 voxelEdge1;
 flat out vec3 voxelEdge2;
-flat out vec3 voxelFaceNormal; // unit geometric normal in grid space
+flat out vec3 voxelFaceNormal;
 
 vec3 voxelBary;
-
-vec3 voxelSwizzle(vec3 p, int axis)
-{
-  return axis == 0 ? p.yzx : (axis == 1 ? p.zxy : p);
-}
-
-float voxelCross2(vec2 a, vec2 b)
-{
-  return a.x * b.y - a.y * b.x;
-}
-
-bool voxelFinite(vec3 v)
-{
-  return !any(isnan(v)) && !any(isinf(v));
-}
 
 void main()
 {
@@ -66,54 +53,25 @@ void main()
   for (int k = 0; k < 3; ++k)
   {
     p[k] = (gl_in[k].gl_Position.xyz / gl_in[k].gl_Position.w * 0.5 + 0.5) * float(voxelResolution);
-    if (!voxelFinite(p[k]))
-    {
-      return;
-    }
   }
-  vec3 n = cross(p[1] - p[0], p[2] - p[0]);
-  vec3 an = abs(n);
-  float nmax = max(an.x, max(an.y, an.z));
-  // Zero-area triangles have no surface to voxelize.
-  if (!(nmax > 1e-12))
+  VoxelTriangle t;
+  vec3 q[3];
+  vec2 v[3];
+  float area2;
+  if (!voxelTriangleSetup(p, t, q, v, area2))
   {
     return;
   }
-  int axis = (an.x >= an.y && an.x >= an.z) ? 0 : (an.y >= an.z ? 1 : 2);
-  vec3 q[3];
-  for (int k = 0; k < 3; ++k)
-  {
-    q[k] = voxelSwizzle(p[k], axis);
-  }
-  vec3 nq = voxelSwizzle(n, axis);
-  float area2 = voxelCross2(q[1].xy - q[0].xy, q[2].xy - q[0].xy);
-
-  // Counter-clockwise order in the projected plane, so culling never drops the triangle.
-  int order[3];
-  order[0] = 0;
-  order[1] = area2 > 0.0 ? 1 : 2;
-  order[2] = area2 > 0.0 ? 2 : 1;
-  vec2 v[3];
-  for (int k = 0; k < 3; ++k)
-  {
-    v[k] = q[order[k]].xy;
-  }
-
+  vec3 edges[3] = vec3[3](t.edge0, t.edge1, t.edge2);
   vec3 lines[3];
-  vec3 edges[3];
   for (int k = 0; k < 3; ++k)
   {
-    vec2 e = v[(k + 1) % 3] - v[k];
-    vec2 en = vec2(e.y, -e.x);
-    float d = -dot(en, v[k]);
-    edges[k] = vec3(en, d);
     // Half the pixel diagonal along the normal, plus a little for rasterization ties.
-    float offset = 0.5 * (abs(en.x) + abs(en.y)) + 1e-3 * length(en);
-    lines[k] = vec3(en, d - offset);
+    vec2 en = edges[k].xy;
+    lines[k] = vec3(en, edges[k].z - 0.5 * (abs(en.x) + abs(en.y)) - 1e-3 * length(en));
   }
-
-  vec2 bmin = min(v[0], min(v[1], v[2]));
-  vec2 bmax = max(v[0], max(v[1], v[2]));
+  vec2 bmin = t.box.xy;
+  vec2 bmax = t.box.zw;
 
   vec2 dilated[3];
   bool useTriangle = true;
@@ -128,14 +86,14 @@ void main()
     }
   }
 
-  voxelAxis = axis;
-  voxelBox = vec4(bmin, bmax);
-  voxelPlane = vec3(-nq.xy / nq.z, dot(nq, q[0]) / nq.z);
-  voxelDepthRange = vec2(min(q[0].z, min(q[1].z, q[2].z)), max(q[0].z, max(q[1].z, q[2].z)));
-  voxelEdge0 = edges[0];
-  voxelEdge1 = edges[1];
-  voxelEdge2 = edges[2];
-  voxelFaceNormal = n / length(n);
+  voxelAxis = t.axis;
+  voxelBox = t.box;
+  voxelPlane = t.plane;
+  voxelDepthRange = t.depthRange;
+  voxelEdge0 = t.edge0;
+  voxelEdge1 = t.edge1;
+  voxelEdge2 = t.edge2;
+  voxelFaceNormal = t.faceNormal;
 
   vec2 corners[3];
   if (useTriangle)
@@ -157,10 +115,7 @@ void main()
   for (int j = 0; j < 3; ++j)
   {
     vec2 c = corners[j];
-    // Barycentric weights of c with respect to the original (unordered) triangle.
-    float b0 = voxelCross2(q[1].xy - c, q[2].xy - c) / area2;
-    float b1 = voxelCross2(q[2].xy - c, q[0].xy - c) / area2;
-    voxelBary = vec3(b0, b1, 1.0 - b0 - b1);
+    voxelBary = voxelBarycentric(q, area2, c);
 
     //VTK::PrimID::Impl
     //VTK::Clip::Impl

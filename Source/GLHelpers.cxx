@@ -97,6 +97,11 @@ void ComputeProgram::SetInt(const char* name, int value)
   glUniform1i(glGetUniformLocation(this->Handle, name), value);
 }
 
+void ComputeProgram::SetUInt(const char* name, unsigned int value)
+{
+  glUniform1ui(glGetUniformLocation(this->Handle, name), value);
+}
+
 void ComputeProgram::SetFloat(const char* name, float value)
 {
   glUniform1f(glGetUniformLocation(this->Handle, name), value);
@@ -134,10 +139,16 @@ void ComputeProgram::DispatchCube(int n, int localSize)
   glUseProgram(0);
 }
 
-void ComputeProgram::DispatchIndirect(const StorageBuffer& arguments)
+void ComputeProgram::DispatchGroups(unsigned int x, unsigned int y, unsigned int z)
+{
+  glDispatchCompute(x, y, z);
+  glUseProgram(0);
+}
+
+void ComputeProgram::DispatchIndirect(const StorageBuffer& arguments, std::size_t offset)
 {
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, arguments.GetHandle());
-  glDispatchComputeIndirect(0);
+  glDispatchComputeIndirect(static_cast<GLintptr>(offset));
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
   glUseProgram(0);
 }

@@ -51,6 +51,7 @@ public:
   /// Bind the program (after telling VTK's shader cache to forget its current program).
   void Use(vtkOpenGLRenderWindow* renWin);
   void SetInt(const char* name, int value);
+  void SetUInt(const char* name, unsigned int value);
   void SetFloat(const char* name, float value);
   void SetVec3Array(const char* name, int count, const float* values);
   void SetVec2(const char* name, float x, float y);
@@ -63,9 +64,11 @@ public:
   void DispatchCube(int n, int localSize);
   /// Dispatch tiles of `tile` x `tile` to cover a `width` x `height` image, then unbind.
   void DispatchImage(int width, int height, int tile);
-  /// Dispatch the groups that a buffer's first three uints count (written on the GPU, e.g.
-  /// the occupied-brick list), then unbind.
-  void DispatchIndirect(const StorageBuffer& arguments);
+  /// Dispatch `x` x `y` x `z` groups, then unbind.
+  void DispatchGroups(unsigned int x, unsigned int y, unsigned int z);
+  /// Dispatch the groups that three uints of a buffer count (written on the GPU, e.g. the
+  /// occupied-brick list), at `offset` bytes, then unbind.
+  void DispatchIndirect(const StorageBuffer& arguments, std::size_t offset = 0);
   void Release();
 
 private:

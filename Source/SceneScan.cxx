@@ -318,7 +318,8 @@ bool SceneScan::Scan(vtkRenderer* renderer, const Settings& settings, Ranks& ran
   found.SettingsChanged = !this->Voxelized || !this->BuiltGrid.IsValid() ||
     this->BuiltGrid.Resolution != settings.VoxelResolution ||
     this->BuiltPadding != settings.GridPadding ||
-    settings.HardwareConservativeRaster != this->BuiltHardware;
+    settings.HardwareConservativeRaster != this->BuiltHardware ||
+    settings.ComputeVoxelization != this->BuiltCompute;
   found.Invalidate = this->InvalidateRequested;
   // Distributed: one grid around every rank's piece, and what any rank must rebuild, all
   // rebuild.
@@ -371,6 +372,7 @@ void SceneScan::Accept(const VoxelUpdate& update, const Settings& settings)
   this->BuiltPadding = settings.GridPadding;
   this->BuiltEmission = update.Emission;
   this->BuiltHardware = settings.HardwareConservativeRaster;
+  this->BuiltCompute = settings.ComputeVoxelization;
   this->Voxelized = true;
 }
 

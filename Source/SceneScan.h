@@ -120,6 +120,7 @@ private:
   double BuiltPadding = -1.0;
   bool BuiltEmission = false;
   bool BuiltHardware = false;
+  bool BuiltCompute = false;
   bool InvalidateRequested = false;
   int FramesSinceUpdate = 0;
   bool AnySpecular = false;

@@ -58,6 +58,8 @@ unsigned long long VoxelStages::AllocatedBytes(int resource) const
       return this->Mipmap.MemoryBytes();
     case vtkVoxelGIPass::RESOURCE_SHADOW_MAPS:
       return this->Shadows.Maps.Bytes();
+    case vtkVoxelGIPass::RESOURCE_SCENE_BUFFERS:
+      return this->Voxelize->SceneBytes();
     default:
       return 0;
   }

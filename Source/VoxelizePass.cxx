@@ -136,6 +136,11 @@ bool VoxelizePass::Prepare(const Frame& frame, std::string& error)
     }
     this->ShaderStageTime.Modified(); // the mapper shaders depend on the emission variant
   }
+  if (!this->Compute.Prepare(this->Defines(), error))
+  {
+    this->ReleaseGraphicsResources(frame.Window);
+    return false;
+  }
   return true;
 }
 
@@ -162,11 +167,26 @@ void VoxelizePass::Run(const Frame& frame)
   const bool full = frame.Plan.Voxels.Full;
   this->Clear(frame);
 
+  // Actors whose triangles the compute path reads go there; the others draw through copies
+  // of their mappers.
   std::vector<vtkProp*> staticProps;
   std::vector<vtkProp*> dynamicProps;
+  std::vector<VoxelizeCompute::Item> staticItems;
+  std::vector<VoxelizeCompute::Item> dynamicItems;
   this->PropEmissions.clear();
   for (const ActorRecord& record : *frame.Actors)
   {
+    if (!full && !record.Dynamic)
+    {
+      continue; // its voxels are kept
+    }
+    const SceneBuffers::Entry* buffers =
+      frame.Config.ComputeVoxelization ? this->Compute.Read(record.Actor) : nullptr;
+    if (buffers)
+    {
+      (record.Dynamic ? dynamicItems : staticItems).push_back({ record.Actor, buffers, record.Emission });
+      continue;
+    }
     (record.Dynamic ? dynamicProps : staticProps).push_back(record.Actor);
     this->PropEmissions[record.Actor] = record.Emission;
   }
@@ -194,12 +214,12 @@ void VoxelizePass::Run(const Frame& frame)
     }
     if (full)
     {
-      this->Draw(frame, staticProps, true);
+      this->Draw(frame, staticProps, staticItems, true);
       this->MergeFlags(frame);
     }
-    if (!dynamicProps.empty())
+    if (!dynamicProps.empty() || !dynamicItems.empty())
     {
-      this->Draw(frame, dynamicProps, false);
+      this->Draw(frame, dynamicProps, dynamicItems, false);
     }
     glDisable(GL_DEPTH_CLAMP);
     if (this->HardwareConservative)
@@ -211,6 +231,7 @@ void VoxelizePass::Run(const Frame& frame)
   if (full)
   {
     this->Copies.Retain(*frame.Actors, frame.Window); // actors come and go in full rebuilds
+    this->Compute.Retain(*frame.Actors);
   }
 
   // Line and point primitives of mixed polydata cannot feed the triangle geometry shader;
@@ -281,16 +302,22 @@ void VoxelizePass::AimCamera(const Frame& frame)
   camera->SetUseExplicitProjectionTransformMatrix(true);
 }
 
-void VoxelizePass::Draw(const Frame& frame, std::vector<vtkProp*>& props, bool staticPass)
+void VoxelizePass::Draw(const Frame& frame, std::vector<vtkProp*>& props,
+  const std::vector<VoxelizeCompute::Item>& items, bool staticPass)
 {
   ScopedStage stage(*frame.Clock,
     staticPass ? stage::VoxelizeStatic : stage::VoxelizeDynamic);
-  this->StaticPass = staticPass;
-  // The user's renderer and its camera are left alone (observers of its ActiveCameraEvent
-  // may render other windows or delete props): the props draw through a renderer of ours.
-  vtkRenderState state(this->View.Attach(frame.Window));
-  state.SetPropArrayAndCount(props.data(), static_cast<int>(props.size()));
-  this->Render(&state);
+  if (!props.empty())
+  {
+    this->StaticPass = staticPass;
+    // The user's renderer and its camera are left alone (observers of its ActiveCameraEvent
+    // may render other windows or delete props): the props draw through a renderer of ours.
+    vtkRenderState state(this->View.Attach(frame.Window));
+    state.SetPropArrayAndCount(props.data(), static_cast<int>(props.size()));
+    this->Render(&state);
+  }
+  this->BindAccumulators();
+  this->Compute.Draw(frame, items, staticPass);
   Barrier();
 }
 
@@ -454,6 +481,7 @@ void VoxelizePass::ReleaseGraphicsResources(vtkWindow* window)
   this->ResolveProgram.Release();
   this->Framebuffer.Release();
   this->Copies.ReleaseGraphicsResources(window);
+  this->Compute.ReleaseGraphicsResources();
   this->View.Release();
   this->Resolution = 0;
 }

@@ -1,7 +1,8 @@
 /**
  * Voxelize stage: the voxel volumes and the internal render pass that fills them.
  *
- * Actors are rendered by copies of their VTK mappers (MapperCopies: the user's mappers never
+ * Actors whose triangles compute voxelization can read (plain polydata surfaces: VoxelizeCompute)
+ * are voxelized from their GPU-resident copies; the others are rendered by copies of their VTK mappers (MapperCopies: the user's mappers never
  * switch shader code), with this pass in their render-pass keys so that it injects its code (voxelize.geom, voxelize.frag): every fragment adds its
  * unlit colour, geometric normal and emission to exact integer accumulators (one shader
  * storage buffer per channel), seen through an orthographic camera fitted to the grid cube.
@@ -15,6 +16,7 @@
 
 #include "GLHelpers.h"
 #include "MapperCopies.h"
+#include "VoxelizeCompute.h"
 #include "shader_interface.h"
 
 #include "vtkNew.h"              // for vtkNew
@@ -58,6 +60,9 @@ public:
   std::size_t MemoryBytes() const;
   /// The part of MemoryBytes() that only emissive scenes need.
   std::size_t EmissionBytes() const;
+  /// The actors' triangles kept for compute voxelization (not in MemoryBytes(): they follow
+  /// the scene, not the settings).
+  std::size_t SceneBytes() const { return this->Compute.MemoryBytes(); }
 
   /// The sampled volumes (emission only in emissive scenes).
   const Volume3D& GetAlbedo() const { return this->AlbedoVolume; }
@@ -90,8 +95,10 @@ private:
   std::string Defines() const;
   /// Aim the voxelization camera: its view volume is the grid cube.
   void AimCamera(const Frame& frame);
-  /// Render `props` into the accumulators as static or dynamic actors.
-  void Draw(const Frame& frame, std::vector<vtkProp*>& props, bool staticPass);
+  /// Render `props` through their mappers and voxelize `items` by compute into the
+  /// accumulators, as static or dynamic actors.
+  void Draw(const Frame& frame, std::vector<vtkProp*>& props,
+    const std::vector<VoxelizeCompute::Item>& items, bool staticPass);
   /// Put every brick of the grid in the brick list.
   void ListEveryBrick();
   void Clear(const Frame& frame);
@@ -120,6 +127,7 @@ private:
   EmptyFramebuffer Framebuffer;
   ViewRenderer View; // draws through the grid camera
   MapperCopies Copies; // draw the actors with this pass's shader code only
+  VoxelizeCompute Compute; // the actors read into buffers
   vtkTimeStamp ShaderStageTime;
 };
 

@@ -228,7 +228,9 @@ public:
     RESOURCE_RADIANCE,         ///< the radiance volume (with mips when isotropic)
     RESOURCE_DIRECT,           ///< direct light kept for bounces (Bounces > 0 only)
     RESOURCE_DIRECTIONAL,      ///< the six anisotropic volumes (anisotropic mipmaps only)
-    RESOURCE_SHADOW_MAPS       ///< shadow maps (LIGHT_OCCLUSION_SHADOW_MAPS only)
+    RESOURCE_SHADOW_MAPS,      ///< shadow maps (LIGHT_OCCLUSION_SHADOW_MAPS only)
+    RESOURCE_SCENE_BUFFERS     ///< the actors' triangles compute voxelization reads (scene-sized,
+                               ///< not in GetVoxelMemoryBytes())
   };
 
   /**

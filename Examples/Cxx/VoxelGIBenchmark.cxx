@@ -12,8 +12,9 @@
 // galleries, drapes, coloured), and one tessellated sphere of about N triangles.
 // Sequences: static (nothing changes), orbit (camera only), headlight-orbit (the same orbit
 // with the scene's lights off and VTK's headlight on: the light turns with the camera), light
-// (one light moves), one-moving (one dynamic actor moves), all-moving (every actor moves), and
-// plain (GI off, VTK alone, static); --sequences runs some of them. Per frame: the wall time of Render()
+// (one light moves), one-moving (one dynamic actor moves), all-moving (every actor moves),
+// new-data (every actor's data replaced, as by a time step: its points modified), plain (GI
+// off, VTK alone, static) and plain-new-data (GI off, new data each frame); --sequences runs some of them. Per frame: the wall time of Render()
 // with glFinish, its CPU time (Render() returning, without glFinish), the GPU time span of
 // the frame (two timestamp queries) and per-stage GPU times (timer queries) go to the CSV;
 // the JSON and the printed table hold medians per sequence, and the mean frame (a sequence
@@ -46,6 +47,7 @@
 #include "vtkNew.h"
 #include "vtkPlaneSource.h"
 #include "vtkCell.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
@@ -522,6 +524,17 @@ int main(int argc, char* argv[])
   };
   double lightBase[3];
   light->GetPosition(lightBase);
+  // A time step that replaces every actor's data: VTK uploads its buffers again, and so does
+  // the pass.
+  auto newData = [&](int) {
+    for (vtkActor* actor : actors)
+    {
+      if (auto* data = vtkPolyData::SafeDownCast(actor->GetMapper()->GetInputDataObject(0, 0)))
+      {
+        data->GetPoints()->Modified();
+      }
+    }
+  };
   const std::vector<Sequence> sequences = {
     { "static", [](int) {}, true },
     { "orbit", [&](int) { orbit(); }, true },
@@ -540,7 +553,9 @@ int main(int argc, char* argv[])
         }
       },
       true },
+    { "new-data", newData, true },
     { "plain", [](int) {}, false },
+    { "plain-new-data", newData, false },
   };
 
   std::vector<const Sequence*> selected;

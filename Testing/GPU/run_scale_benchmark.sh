@@ -3,13 +3,16 @@
 # GPU-resident scene (docs/performance.md), at 1920x1080 in VTK's default multisampled
 # window, the pass's defaults, plain VTK's frame of the same scene in the same run, headless
 # through EGL. Each JSON lists the settings it ran with.
-#   sphere of N triangles, all moving, 128^3 and 256^3
+#   sphere of N triangles, all moving and new data each frame, 128^3 and 256^3; at 128^3 also
+#     through VTK's mappers (ComputeVoxelization=0)
 #   atrium (81 actors), 256^3: all moving, light moving, camera only
-#   field of 1000 actors, 128^3: all moving, camera only
+#   field of 1000 actors, 128^3: all moving, new data, camera only
+#   voxelization against triangles (compute and raster), 1e4 ... SWEEP_MAX, 128^3
 # Usage: run_scale_benchmark.sh BIN_DIR LIB_DIR OUTPUT_DIR [MACHINE] [FRAMES] [SPHERE_TRIANGLES]
+#                               [SWEEP_MAX]
 set -eu
 bin=$1; lib=$2; out=$3
-machine=${4:-h200}; frames=${5:-40}; triangles=${6:-10000000}
+machine=${4:-h200}; frames=${5:-40}; triangles=${6:-10000000}; sweep=${7:-30000000}
 mkdir -p "$out"
 export LD_PRELOAD="$lib/libVoxelGIGlewEGLShim.so"
 run() {
@@ -18,8 +21,20 @@ run() {
     --sequences "$sequences" --json "$out/$machine-scale-$name.json" \
     --csv "$out/$machine-scale-$name.csv" "$@" 2>&1 | grep -v -E "WARN|ERR|^\s*$|wrote"
 }
-run field1000-128 orbit,all-moving,plain --scene field --objects 999 --resolution 128
+run field1000-128 orbit,all-moving,new-data,plain,plain-new-data --scene field --objects 999 --resolution 128
 run atrium-256 orbit,light,all-moving,plain --scene atrium --resolution 256
 for res in 128 256; do
-  run "sphere$triangles-$res" all-moving,plain --scene sphere --triangles "$triangles" --resolution "$res"
+  run "sphere$triangles-$res" all-moving,new-data,plain,plain-new-data --scene sphere \
+    --triangles "$triangles" --resolution "$res"
+done
+run "sphere$triangles-128-raster" all-moving,plain --scene sphere --triangles "$triangles" \
+  --resolution 128 --set ComputeVoxelization=0
+n=10000
+while [ "$n" -le "$sweep" ]; do
+  for path in compute raster; do
+    value=$([ "$path" = compute ] && echo 1 || echo 0)
+    run "sweep-$path-$n" all-moving,plain --scene sphere --triangles "$n" --resolution 128 \
+      --set ComputeVoxelization="$value"
+  done
+  n=$((n * 10))
 done
