@@ -33,7 +33,8 @@ bool voxelFinite(vec3 v)
 // Sets up the triangle `p` (grid coordinates). `q`: its vertices projected (unordered),
 // `v`: the projected corners in counter-clockwise order, `area2`: twice the signed projected
 // area of `q`. False for non-finite or zero-area triangles, which add no voxels.
-bool voxelTriangleSetup(vec3 p[3], out VoxelTriangle t, out vec3 q[3], out vec2 v[3], out float area2)
+bool voxelTriangleSetup(vec3 p[3], out VoxelTriangle t, out vec3 q[3], out vec2 v[3],
+                        out float area2)
 {
   for (int k = 0; k < 3; ++k)
   {

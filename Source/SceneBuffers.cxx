@@ -58,9 +58,81 @@ struct VertexWriter
   }
 };
 
-/// Appends the triangles of a cell array (cell ids from `firstCell`) as VTK's index buffers
-/// order them: polygons as fans from their first point, strips with every other triangle turned
-/// so that all face one way. Read straight from the offsets and connectivity, in parallel.
+/// Cells are read in blocks: each counts its triangles, then writes them where the blocks
+/// before it end.
+constexpr vtkIdType BlockCells = 1 << 14;
+
+/// Where each block's triangles start (one more entry: the total). A cell of n points gives
+/// n - 2 triangles.
+template <typename Offset>
+std::vector<std::size_t> BlockStarts(const Offset* offsets, vtkIdType cells)
+{
+  const vtkIdType blocks = (cells + BlockCells - 1) / BlockCells;
+  std::vector<std::size_t> first(static_cast<std::size_t>(blocks) + 1, 0);
+  vtkSMPTools::For(0, blocks, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType block = begin; block < end; ++block)
+    {
+      std::size_t count = 0;
+      for (vtkIdType c = block * BlockCells; c < std::min(cells, (block + 1) * BlockCells); ++c)
+      {
+        const vtkIdType n = static_cast<vtkIdType>(offsets[c + 1] - offsets[c]);
+        count += static_cast<std::size_t>(n > 2 ? n - 2 : 0);
+      }
+      first[block + 1] = count;
+    }
+  });
+  for (vtkIdType block = 0; block < blocks; ++block)
+  {
+    first[block + 1] += first[block];
+  }
+  return first;
+}
+
+/// Writes the n - 2 triangles of a cell of n points at `t` as VTK's index buffers order them:
+/// polygons as fans from their first point, strips with every other triangle turned so that
+/// all face one way. False when a triangle has an index beyond the points (marked Damaged).
+template <typename Id>
+bool WriteCell(const Id* cell, vtkIdType n, bool strips, vtkIdType points, std::uint32_t color,
+  std::uint32_t* t)
+{
+  bool whole = true;
+  for (vtkIdType k = 2; k < n; ++k, t += 4)
+  {
+    const vtkIdType i = k - 2;
+    const vtkIdType a = strips ? cell[i] : cell[0];
+    const vtkIdType b = strips ? cell[i + 1 + i % 2] : cell[k - 1];
+    const vtkIdType d = strips ? cell[i + 1 + (i + 1) % 2] : cell[k];
+    if (a < 0 || b < 0 || d < 0 || a >= points || b >= points || d >= points)
+    {
+      t[0] = Damaged; // never an index beyond the buffer
+      whole = false;
+      continue;
+    }
+    t[0] = static_cast<std::uint32_t>(a);
+    t[1] = static_cast<std::uint32_t>(b);
+    t[2] = static_cast<std::uint32_t>(d);
+    t[3] = color;
+  }
+  return whole;
+}
+
+/// Removes the triangles marked Damaged from `base` on, keeping the order of the rest.
+void RemoveDamaged(std::vector<std::uint32_t>& triangles, std::size_t base)
+{
+  std::size_t kept = base;
+  for (std::size_t t = base; t < triangles.size(); t += 4)
+  {
+    if (triangles[t] != Damaged)
+    {
+      std::copy_n(triangles.begin() + t, 4, triangles.begin() + kept);
+      kept += 4;
+    }
+  }
+  triangles.resize(kept);
+}
+
+/// Appends the triangles of a cell array (cell ids from `firstCell`), read straight from its
+/// offsets and connectivity, in parallel.
 struct TriangleWriter
 {
   template <typename State>
@@ -70,78 +142,34 @@ struct TriangleWriter
     const vtkIdType cells = state.GetNumberOfCells();
     const auto* offsets = state.GetOffsets()->GetPointer(0);
     const auto* ids = state.GetConnectivity()->GetPointer(0);
-    // Blocks of cells: each counts its triangles (a cell of n points gives n - 2), then writes
-    // them from where the blocks before it end.
-    const vtkIdType blockCells = 1 << 14;
-    const vtkIdType blocks = (cells + blockCells - 1) / blockCells;
-    std::vector<std::size_t> first(static_cast<std::size_t>(blocks) + 1, 0);
-    vtkSMPTools::For(0, blocks, [&](vtkIdType begin, vtkIdType end) {
-      for (vtkIdType block = begin; block < end; ++block)
-      {
-        std::size_t count = 0;
-        for (vtkIdType c = block * blockCells; c < std::min(cells, (block + 1) * blockCells); ++c)
-        {
-          const vtkIdType n = static_cast<vtkIdType>(offsets[c + 1] - offsets[c]);
-          count += static_cast<std::size_t>(n > 2 ? n - 2 : 0);
-        }
-        first[block + 1] = count;
-      }
-    });
-    for (vtkIdType block = 0; block < blocks; ++block)
-    {
-      first[block + 1] += first[block];
-    }
+    const std::vector<std::size_t> first = BlockStarts(offsets, cells);
     const std::size_t base = triangles.size();
-    triangles.resize(base + 4 * first[blocks]);
+    triangles.resize(base + 4 * first.back());
     std::uint32_t* out = triangles.data() + base;
     std::atomic<bool> damaged{ false };
+    const vtkIdType blocks = static_cast<vtkIdType>(first.size()) - 1;
     vtkSMPTools::For(0, blocks, [&](vtkIdType begin, vtkIdType end) {
-      bool bad = false;
+      bool whole = true;
       for (vtkIdType block = begin; block < end; ++block)
       {
         std::uint32_t* t = out + 4 * first[block];
-        for (vtkIdType c = block * blockCells; c < std::min(cells, (block + 1) * blockCells); ++c)
+        for (vtkIdType c = block * BlockCells; c < std::min(cells, (block + 1) * BlockCells); ++c)
         {
-          const auto* cell = ids + offsets[c];
           const vtkIdType n = static_cast<vtkIdType>(offsets[c + 1] - offsets[c]);
           const std::uint32_t color =
             cellColors ? PackColor(cellColors + 4 * (firstCell + c)) : 0u;
-          for (vtkIdType k = 2; k < n; ++k, t += 4)
-          {
-            const vtkIdType i = k - 2;
-            const vtkIdType a = strips ? cell[i] : cell[0];
-            const vtkIdType b = strips ? cell[i + 1 + i % 2] : cell[k - 1];
-            const vtkIdType d = strips ? cell[i + 1 + (i + 1) % 2] : cell[k];
-            if (a < 0 || b < 0 || d < 0 || a >= points || b >= points || d >= points)
-            {
-              t[0] = Damaged; // never an index beyond the buffer
-              bad = true;
-              continue;
-            }
-            t[0] = static_cast<std::uint32_t>(a);
-            t[1] = static_cast<std::uint32_t>(b);
-            t[2] = static_cast<std::uint32_t>(d);
-            t[3] = color;
-          }
+          whole = WriteCell(ids + offsets[c], n, strips, points, color, t) && whole;
+          t += 4 * std::max<vtkIdType>(n - 2, 0);
         }
       }
-      if (bad)
+      if (!whole)
       {
         damaged = true;
       }
     });
     if (damaged)
     {
-      std::size_t kept = base;
-      for (std::size_t t = base; t < triangles.size(); t += 4)
-      {
-        if (triangles[t] != Damaged)
-        {
-          std::copy_n(triangles.begin() + t, 4, triangles.begin() + kept);
-          kept += 4;
-        }
-      }
-      triangles.resize(kept);
+      RemoveDamaged(triangles, base);
     }
   }
 };
@@ -204,8 +232,8 @@ bool ReadTriangles(vtkActor* actor, vtkPolyData* input, TriangleArrays& arrays, 
     why = "colours from field data";
     return false;
   }
-  arrays.Colors =
-    !colors ? TriangleColors::Actor : (cellFlag == 1 ? TriangleColors::Cell : TriangleColors::Vertex);
+  arrays.Colors = !colors ? TriangleColors::Actor
+                          : (cellFlag == 1 ? TriangleColors::Cell : TriangleColors::Vertex);
   const double* bounds = input->GetBounds();
   for (int a = 0; a < 3; ++a)
   {

@@ -56,8 +56,9 @@ std::string ComputeUnreadable(vtkActor* actor);
 
 /// Read the surface triangles of `actor`'s polydata as VTK's mapper draws them (polygons as
 /// fans, strips as alternating triangles; triangles with an index beyond the points are left
-/// out), coloured by the mapper's own mapping, into `arrays` (whose memory is reused). False with `why` when the colours come from
-/// field data, which VTK applies in ways the buffers do not hold.
+/// out), coloured by the mapper's own mapping, into `arrays` (whose memory is reused). False
+/// with `why` when the colours come from field data, which VTK applies in ways the buffers do
+/// not hold.
 bool ReadTriangles(vtkActor* actor, vtkPolyData* input, TriangleArrays& arrays, std::string& why);
 
 class SceneBuffers

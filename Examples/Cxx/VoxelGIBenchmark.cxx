@@ -13,14 +13,15 @@
 // Sequences: static (nothing changes), orbit (camera only), headlight-orbit (the same orbit
 // with the scene's lights off and VTK's headlight on: the light turns with the camera), light
 // (one light moves), one-moving (one dynamic actor moves), all-moving (every actor moves),
-// new-data (every actor's data replaced, as by a time step: its points modified), plain (GI
-// off, VTK alone, static) and plain-new-data (GI off, new data each frame); --sequences runs some of them. Per frame: the wall time of Render()
-// with glFinish, its CPU time (Render() returning, without glFinish), the GPU time span of
-// the frame (two timestamp queries) and per-stage GPU times (timer queries) go to the CSV;
-// the JSON and the printed table hold medians per sequence, and the mean frame (a sequence
-// whose frames differ in kind, as the headlight orbit's relights, is judged by it). --set sets any setting of the
-// settings table (vtkVoxelGISettings), e.g. --set DiffuseConeCount=16; the JSON lists them. Each sequence runs twice: with
-// the stage timers for the stage times, then without them for the frame, CPU and span.
+// new-data (every actor's data replaced, as by a time step: its points modified), plain (GI off,
+// VTK alone, static) and plain-new-data (GI off, new data each frame); --sequences runs some of
+// them. Per frame: the wall time of Render() with glFinish, its CPU time (Render() returning,
+// without glFinish), the GPU time span of the frame (two timestamp queries) and per-stage GPU times
+// (timer queries) go to the CSV; the JSON and the printed table hold medians per sequence, and the
+// mean frame (a sequence whose frames differ in kind, as the headlight orbit's relights, is judged
+// by it). --set sets any setting of the settings table (vtkVoxelGISettings), e.g. --set
+// DiffuseConeCount=16; the JSON lists them. Each sequence runs twice: with the stage timers for the
+// stage times, then without them for the frame, CPU and span.
 // --viewports N tiles the window with N renderers showing the same props, each camera turned
 // by 10 degrees from the last, each with a pass of the same settings; with --shared-grid 1 the
 // others share the first pass's voxel grid (vtkVoxelGIPass::SetVoxelSource). Camera
