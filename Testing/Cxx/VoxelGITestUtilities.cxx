@@ -299,7 +299,9 @@ Messages::Messages(vtkObject* object)
 {
   this->Callback->SetClientData(this);
   this->Callback->SetCallback([](vtkObject*, unsigned long, void* client, void* data) {
-    static_cast<Messages*>(client)->Text += static_cast<const char*>(data);
+    auto* messages = static_cast<Messages*>(client);
+    messages->Text += static_cast<const char*>(data);
+    ++messages->Count;
   });
   object->AddObserver(vtkCommand::WarningEvent, this->Callback);
   object->AddObserver(vtkCommand::ErrorEvent, this->Callback);

@@ -76,6 +76,7 @@ struct GIWindow
 struct Messages
 {
   std::string Text;
+  int Count = 0; // messages received
   vtkNew<vtkCallbackCommand> Callback;
   explicit Messages(vtkObject* object);
   bool Has(const std::string& part) const { return this->Text.find(part) != std::string::npos; }

@@ -34,11 +34,14 @@
 #include "vtkUnsignedCharArray.h"
 #include "vtk_jsoncpp.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <stdexcept>
 #include <vector>
 
 vtkStandardNewMacro(vtkVoxelGISceneFile);
@@ -55,11 +58,6 @@ Json::Value ToJson(const double* v, int n = 3)
     array.append(v[i]);
   }
   return array;
-}
-
-Vec3 FromJson(const Json::Value& v)
-{
-  return { v[0].asDouble(), v[1].asDouble(), v[2].asDouble() };
 }
 
 Vec3 Scaled(double k, const double* c)
@@ -91,6 +89,34 @@ std::string BaseName(const std::string& path)
 {
   const size_t slash = path.find_last_of('/');
   return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+bool Finite(const double* v, int n = 3)
+{
+  return std::all_of(v, v + n, [](double x) { return std::isfinite(x); });
+}
+
+// Why `pd` cannot be written as numbers that read back (NaN and infinity do not), or empty.
+std::string NonFinite(vtkPolyData* pd)
+{
+  for (vtkIdType i = 0; i < pd->GetNumberOfPoints(); ++i)
+  {
+    if (!Finite(pd->GetPoint(i)))
+    {
+      return "non-finite point coordinates (point " + std::to_string(i) + ")";
+    }
+  }
+  for (vtkDataArray* n : { pd->GetPointData()->GetNormals(), pd->GetCellData()->GetNormals() })
+  {
+    for (vtkIdType i = 0; n && i < n->GetNumberOfTuples(); ++i)
+    {
+      if (!Finite(n->GetTuple3(i)))
+      {
+        return "non-finite normals (tuple " + std::to_string(i) + ")";
+      }
+    }
+  }
+  return std::string();
 }
 
 // One actor as the description holds it: world-space polygons and VTK's material.
@@ -154,6 +180,10 @@ vtkSmartPointer<vtkPolyData> Polygons(vtkActor* actor, std::string& problem)
     problem = "lines or vertices, which VTK draws without area (vtkTubeFilter gives surfaces)";
     return nullptr;
   }
+  if (surface->GetNumberOfPolys() + surface->GetNumberOfStrips() == 0)
+  {
+    return nullptr; // nothing to draw: left out, with no problem
+  }
   // Polygons stay as they are (VTK and Cycles split them alike); strips become triangles.
   vtkNew<vtkTriangleFilter> strips;
   strips->SetInputData(surface);
@@ -170,13 +200,23 @@ vtkSmartPointer<vtkPolyData> Polygons(vtkActor* actor, std::string& problem)
   }
   world->SetTransform(transform);
   world->Update();
-  return world->GetOutput();
+  problem = NonFinite(world->GetOutput());
+  return problem.empty() ? world->GetOutput() : nullptr;
 }
 
 // Why VTK's material of `actor` has no counterpart in Cycles, or empty.
 std::string MaterialProblem(vtkActor* actor, const double background[3], bool colored)
 {
   vtkProperty* p = actor->GetProperty();
+  const double terms[] = { p->GetAmbient(), p->GetDiffuse(), p->GetSpecular(),
+    p->GetSpecularPower() };
+  vtkInformation* keys = actor->GetPropertyKeys();
+  if (!Finite(terms, 4) || !Finite(p->GetAmbientColor()) || !Finite(p->GetDiffuseColor()) ||
+    !Finite(p->GetSpecularColor()) ||
+    (keys && keys->Has(vtkVoxelGIPass::EMISSION()) && !Finite(keys->Get(vtkVoxelGIPass::EMISSION()))))
+  {
+    return "non-finite material values";
+  }
   if (p->GetOpacity() < 1.0)
   {
     return "translucent (opacity " + std::to_string(p->GetOpacity()) + ")";
@@ -197,7 +237,6 @@ std::string MaterialProblem(vtkActor* actor, const double background[3], bool co
   {
     return "wireframe or points representation";
   }
-  vtkInformation* keys = actor->GetPropertyKeys();
   if (keys && keys->Has(vtkVoxelGIPass::EMISSION()))
   {
     return std::string();
@@ -256,6 +295,13 @@ Json::Value Light(vtkLight* light, vtkCamera* camera, std::string& problem, std:
   Vec3 position, focal;
   light->GetPosition(position.data());
   light->GetFocalPoint(focal.data());
+  const double intensity = light->GetIntensity();
+  if (!Finite(position.data()) || !Finite(focal.data()) || !Finite(light->GetDiffuseColor()) ||
+    !Finite(&intensity, 1))
+  {
+    problem = "non-finite position, focal point, colour or intensity";
+    return l;
+  }
   if (light->LightTypeIsHeadlight())
   {
     camera->GetPosition(position.data());
@@ -312,17 +358,16 @@ Json::Value Light(vtkLight* light, vtkCamera* camera, std::string& problem, std:
   return l;
 }
 
-void WriteObj(const std::string& stem, const std::vector<Surface>& surfaces)
+void WriteObj(std::ostream& obj, std::ostream& mtl, const std::string& mtlName,
+  const std::vector<Surface>& surfaces)
 {
   bool anyColors = false;
   for (const Surface& s : surfaces)
   {
     anyColors = anyColors || s.Colors;
   }
-  std::ofstream mtl(stem + ".mtl");
-  std::ofstream obj(stem + ".obj");
   obj.precision(9);
-  obj << "mtllib " << BaseName(stem) << ".mtl\n";
+  obj << "mtllib " << mtlName << "\n";
   vtkIdType pointBase = 1, normalBase = 1;
   for (const Surface& s : surfaces)
   {
@@ -385,9 +430,16 @@ bool vtkVoxelGISceneFile::Write(vtkRenderer* renderer)
 {
   this->Problems.clear();
   this->Notes.clear();
-  if (!this->FileName || !renderer)
+  const std::string fileName = this->FileName ? this->FileName : "";
+  const std::string stem = Stem(fileName);
+  auto endsWith = [&fileName](const std::string& end) {
+    return fileName.size() >= end.size() &&
+      fileName.compare(fileName.size() - end.size(), end.size(), end) == 0;
+  };
+  if (!renderer || stem.empty() || endsWith(".obj") || endsWith(".mtl"))
   {
-    vtkErrorMacro("Write needs a file name and a renderer");
+    vtkErrorMacro("Write needs a renderer and a file name (not ending in .obj or .mtl, which "
+                  "the description writes beside it)");
     return false;
   }
   auto problem = [this](const std::string& what, const std::string& why) {
@@ -400,6 +452,12 @@ bool vtkVoxelGISceneFile::Write(vtkRenderer* renderer)
     }
   };
   vtkCamera* camera = renderer->GetActiveCamera();
+  const double viewAngle = camera->GetViewAngle();
+  if (!Finite(camera->GetPosition()) || !Finite(camera->GetFocalPoint()) ||
+    !Finite(camera->GetViewUp()) || !Finite(&viewAngle, 1))
+  {
+    problem("camera", "non-finite position, focal point, view up or view angle");
+  }
   if (camera->GetParallelProjection())
   {
     problem("camera", "parallel projection");
@@ -419,6 +477,10 @@ bool vtkVoxelGISceneFile::Write(vtkRenderer* renderer)
 
   double background[3];
   renderer->GetBackground(background);
+  if (!Finite(background))
+  {
+    problem("background", "non-finite colour");
+  }
   std::vector<Surface> surfaces;
   vtkPropCollection* props = renderer->GetViewProps();
   vtkCollectionSimpleIterator it;
@@ -455,6 +517,10 @@ bool vtkVoxelGISceneFile::Write(vtkRenderer* renderer)
                                                                           : "none";
       surfaces.push_back({ "actor" + std::to_string(surfaces.size()), polygons, colors,
         Material(actor, colors != nullptr, normals) });
+    }
+    else if (why.empty())
+    {
+      note("actors without polygons are left out");
     }
     if (!why.empty())
     {
@@ -505,8 +571,6 @@ bool vtkVoxelGISceneFile::Write(vtkRenderer* renderer)
     this->Size[1] = known ? size[1] : 200;
   }
 
-  const std::string stem = Stem(this->FileName);
-  WriteObj(stem, surfaces);
   Json::Value scene;
   scene["obj"] = BaseName(stem) + ".obj";
   scene["size"] = Json::Value(Json::arrayValue);
@@ -526,196 +590,442 @@ bool vtkVoxelGISceneFile::Write(vtkRenderer* renderer)
   Json::StreamWriterBuilder builder;
   builder["indentation"] = "  ";
   builder["precision"] = 9;
-  std::ofstream(this->FileName) << Json::writeString(builder, scene) << "\n";
+  // The description first: a name that cannot be written stops Write() before it makes
+  // the OBJ and MTL files beside it.
+  const std::string paths[] = { fileName, stem + ".obj", stem + ".mtl" };
+  bool existed[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    existed[i] = std::filesystem::exists(paths[i]);
+  }
+  std::ofstream json(paths[0]);
+  json << Json::writeString(builder, scene) << "\n";
+  json.close();
+  bool written = !json.fail();
+  if (written)
+  {
+    std::ofstream obj(paths[1]), mtl(paths[2]);
+    WriteObj(obj, mtl, BaseName(stem) + ".mtl", surfaces);
+    obj.close();
+    mtl.close();
+    written = !obj.fail() && !mtl.fail();
+  }
+  if (!written)
+  {
+    std::error_code ignored;
+    for (int i = 0; i < 3; ++i)
+    {
+      if (!existed[i])
+      {
+        std::filesystem::remove(paths[i], ignored); // no half-written description
+      }
+    }
+    vtkErrorMacro("cannot write the scene description " << fileName << " and the OBJ and MTL "
+                                                         "files beside it");
+    return false;
+  }
   this->Modified();
   return true;
+}
+
+namespace
+{
+// What a damaged description lacks, by field or line: Read() reports it and adds nothing.
+struct Damaged : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+const Json::Value& Field(const Json::Value& object, const char* key, const std::string& where)
+{
+  if (!object.isObject() || !object.isMember(key))
+  {
+    throw Damaged(where + " has no \"" + key + "\"");
+  }
+  return object[key];
+}
+
+double Number(const Json::Value& v, const std::string& what)
+{
+  if (!v.isNumeric() || !std::isfinite(v.asDouble()))
+  {
+    throw Damaged(what + " is not a finite number");
+  }
+  return v.asDouble();
+}
+
+Vec3 Vector(const Json::Value& v, const std::string& what)
+{
+  if (!v.isArray() || v.size() != 3)
+  {
+    throw Damaged(what + " is not three numbers");
+  }
+  return { Number(v[0], what), Number(v[1], what), Number(v[2], what) };
+}
+
+std::string Text(const Json::Value& v, const std::string& what)
+{
+  if (!v.isString())
+  {
+    throw Damaged(what + " is not a string");
+  }
+  return v.asString();
+}
+
+// The OBJ as Write() makes it, and as other writers do (relative indices, v/t/n corners).
+struct Obj
+{
+  struct Corner
+  {
+    size_t Point;
+    long Normal; // -1: none
+  };
+  std::vector<Vec3> Points, Normals;
+  std::vector<Vec3> Colors; // per point: the written colour, or -1 where the point has none
+  std::map<std::string, std::vector<std::vector<Corner>>> Faces; // per material
+  std::vector<std::string> Materials; // in the order of first use
+};
+
+double ObjNumber(const std::string& token, const std::string& where)
+{
+  size_t used = 0;
+  double x = 0.0;
+  try
+  {
+    x = std::stod(token, &used);
+  }
+  catch (const std::exception&)
+  {
+    used = 0;
+  }
+  if (used == 0 || used != token.size() || !std::isfinite(x))
+  {
+    throw Damaged(where + ": \"" + token + "\" is not a finite number");
+  }
+  return x;
+}
+
+// A 1-based index, or a relative one (-1: the last defined), into `count` items.
+long ObjIndex(const std::string& token, size_t count, const std::string& where)
+{
+  size_t used = 0;
+  long k = 0;
+  try
+  {
+    k = std::stol(token, &used);
+  }
+  catch (const std::exception&)
+  {
+    used = 0;
+  }
+  const long resolved = k > 0 ? k - 1 : static_cast<long>(count) + k;
+  if (used == 0 || used != token.size() || k == 0 || resolved < 0 ||
+    resolved >= static_cast<long>(count))
+  {
+    throw Damaged(where + ": index \"" + token + "\" names none of the " +
+      std::to_string(count) + " defined before it");
+  }
+  return resolved;
+}
+
+Obj ReadObj(const std::string& path)
+{
+  std::ifstream in(path);
+  if (!in)
+  {
+    throw Damaged("cannot open " + path);
+  }
+  Obj obj;
+  std::string line, material;
+  for (size_t number = 1; std::getline(in, line); ++number)
+  {
+    const std::string where = path + " line " + std::to_string(number);
+    std::istringstream s(line);
+    std::vector<std::string> tokens;
+    for (std::string token; s >> token;)
+    {
+      tokens.push_back(token);
+    }
+    const std::string tag = tokens.empty() ? std::string() : tokens[0];
+    if (tag == "v" || tag == "vn")
+    {
+      const size_t values = tokens.size() - 1;
+      if (values != 3 && (tag == "vn" || values != 6))
+      {
+        throw Damaged(where + ": " + tag + " needs " + (tag == "v" ? "3 or 6" : "3") + " numbers");
+      }
+      Vec3 p, c{ -1.0, -1.0, -1.0 };
+      for (int k = 0; k < 3; ++k)
+      {
+        p[k] = ObjNumber(tokens[1 + k], where);
+        c[k] = values == 6 ? ObjNumber(tokens[4 + k], where) : c[k];
+      }
+      (tag == "v" ? obj.Points : obj.Normals).push_back(p);
+      if (tag == "v")
+      {
+        obj.Colors.push_back(c);
+      }
+    }
+    else if (tag == "usemtl")
+    {
+      material = tokens.size() > 1 ? tokens[1] : std::string();
+      if (!obj.Faces.count(material))
+      {
+        obj.Materials.push_back(material);
+        obj.Faces[material];
+      }
+    }
+    else if (tag == "f")
+    {
+      if (tokens.size() < 4 || obj.Materials.empty())
+      {
+        throw Damaged(where + ": a face needs 3 corners and a material (usemtl) before it");
+      }
+      std::vector<Obj::Corner> face;
+      for (size_t k = 1; k < tokens.size(); ++k)
+      {
+        // v, v/t, v//n or v/t/n: the texture coordinate is not read
+        const std::string& corner = tokens[k];
+        const size_t first = corner.find('/');
+        const size_t second =
+          first == std::string::npos ? std::string::npos : corner.find('/', first + 1);
+        const size_t point = ObjIndex(corner.substr(0, first), obj.Points.size(), where);
+        const long normal = second == std::string::npos
+          ? -1
+          : ObjIndex(corner.substr(second + 1), obj.Normals.size(), where);
+        face.push_back({ point, normal });
+      }
+      obj.Faces[material].push_back(face);
+    }
+  }
+  return obj;
+}
+
+// The actor of one material: the points its faces use, with their normals and colours.
+vtkSmartPointer<vtkActor> MaterialActor(
+  const Obj& obj, const std::string& material, const Json::Value& m, const std::string& where)
+{
+  const std::string normalMode = Text(Field(m, "normals", where), where + ".normals");
+  if (normalMode != "point" && normalMode != "cell" && normalMode != "none")
+  {
+    throw Damaged(where + ".normals is not point, cell or none");
+  }
+  const Json::Value& colorFlag = m.get("vertex_colors", false);
+  if (!colorFlag.isBool())
+  {
+    throw Damaged(where + ".vertex_colors is not true or false");
+  }
+  const bool colored = colorFlag.asBool();
+  vtkNew<vtkPolyData> pd;
+  vtkNew<vtkPoints> pts;
+  vtkNew<vtkCellArray> polys;
+  vtkNew<vtkFloatArray> n;
+  n->SetNumberOfComponents(3);
+  vtkNew<vtkUnsignedCharArray> rgb;
+  rgb->SetNumberOfComponents(3);
+  std::map<size_t, vtkIdType> local;
+  auto normal = [&](const Obj::Corner& corner) {
+    if (corner.Normal < 0)
+    {
+      throw Damaged(where + ": a face corner without the normal its mode needs");
+    }
+    n->InsertNextTuple(obj.Normals[corner.Normal].data());
+  };
+  for (const auto& face : obj.Faces.at(material))
+  {
+    polys->InsertNextCell(static_cast<int>(face.size()));
+    for (const auto& corner : face)
+    {
+      auto found = local.find(corner.Point);
+      if (found == local.end())
+      {
+        found = local.emplace(corner.Point, pts->InsertNextPoint(obj.Points[corner.Point].data()))
+                  .first;
+        if (normalMode == "point")
+        {
+          normal(corner);
+        }
+        const Vec3& c = obj.Colors[corner.Point];
+        for (int k = 0; colored && k < 3; ++k)
+        {
+          if (c[k] < 0.0 || c[k] > 1.0)
+          {
+            throw Damaged(where + ": a vertex without a colour in [0, 1]");
+          }
+          rgb->InsertNextValue(static_cast<unsigned char>(std::lround(255.0 * SrgbDecode(c[k]))));
+        }
+      }
+      polys->InsertCellPoint(found->second);
+    }
+    if (normalMode == "cell")
+    {
+      normal(face[0]);
+    }
+  }
+  pd->SetPoints(pts);
+  pd->SetPolys(polys);
+  if (normalMode == "point")
+  {
+    pd->GetPointData()->SetNormals(n);
+  }
+  else if (normalMode == "cell")
+  {
+    pd->GetCellData()->SetNormals(n);
+  }
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(pd);
+  mapper->SetScalarVisibility(colored);
+  if (colored)
+  {
+    pd->GetPointData()->SetScalars(rgb);
+    mapper->SetColorModeToDirectScalars();
+  }
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  const Json::Value& vtk = Field(m, "vtk", where);
+  const std::string v = where + ".vtk.";
+  vtkProperty* p = actor->GetProperty();
+  p->SetAmbient(Number(Field(vtk, "ambient", v), v + "ambient"));
+  p->SetAmbientColor(Vector(Field(vtk, "ambient_color", v), v + "ambient_color").data());
+  p->SetDiffuse(Number(Field(vtk, "diffuse", v), v + "diffuse"));
+  p->SetDiffuseColor(Vector(Field(vtk, "diffuse_color", v), v + "diffuse_color").data());
+  p->SetSpecular(Number(Field(vtk, "specular", v), v + "specular"));
+  p->SetSpecularColor(Vector(Field(vtk, "specular_color", v), v + "specular_color").data());
+  p->SetSpecularPower(Number(Field(vtk, "specular_power", v), v + "specular_power"));
+  if (m.isMember("emission"))
+  {
+    const Vec3 e = Vector(m["emission"], where + ".emission");
+    vtkVoxelGIPass::SetPropEmission(actor, e[0], e[1], e[2]);
+  }
+  return actor;
+}
+
+vtkSmartPointer<vtkLight> SceneLight(const Json::Value& l, const std::string& where)
+{
+  auto light = vtkSmartPointer<vtkLight>::New();
+  light->SetLightTypeToSceneLight();
+  light->SetColor(Vector(Field(l, "color", where), where + ".color").data());
+  light->SetIntensity(Number(Field(l, "intensity", where), where + ".intensity"));
+  const std::string type = Text(Field(l, "type", where), where + ".type");
+  if (type == "directional")
+  {
+    const Vec3 d = Vector(Field(l, "direction", where), where + ".direction");
+    light->SetPositional(false);
+    light->SetPosition(-d[0], -d[1], -d[2]);
+    light->SetFocalPoint(0.0, 0.0, 0.0);
+  }
+  else if (type == "point")
+  {
+    light->SetPositional(true);
+    light->SetConeAngle(90.0);
+    light->SetPosition(Vector(Field(l, "position", where), where + ".position").data());
+  }
+  else
+  {
+    throw Damaged(where + ".type is neither directional nor point");
+  }
+  if (l.get("headlight", false).asBool())
+  {
+    light->SetLightTypeToHeadlight();
+  }
+  else if (l.isMember("camera_light"))
+  {
+    const Json::Value& c = l["camera_light"];
+    light->SetLightTypeToCameraLight();
+    light->SetPosition(Vector(Field(c, "position", where), where + ".camera_light").data());
+    light->SetFocalPoint(Vector(Field(c, "focal_point", where), where + ".camera_light").data());
+  }
+  return light;
+}
 }
 
 //------------------------------------------------------------------------------
 bool vtkVoxelGISceneFile::Read(vtkRenderer* renderer)
 {
-  Json::Value scene;
+  const std::string name = this->FileName ? this->FileName : "";
+  std::vector<vtkSmartPointer<vtkActor>> actors;
+  std::vector<vtkSmartPointer<vtkLight>> lights;
+  Vec3 position, focal, up, background;
+  double viewAngle = 0.0;
+  int size[2];
+  // Everything is read and checked before the renderer changes: a damaged file adds nothing.
+  try
   {
-    std::ifstream in(this->FileName ? this->FileName : "");
+    if (!renderer)
+    {
+      throw Damaged("no renderer to read into");
+    }
+    Json::Value scene;
+    std::ifstream in(name);
     Json::CharReaderBuilder builder;
     std::string errors;
-    if (!renderer || !in || !Json::parseFromStream(builder, in, &scene, &errors))
+    if (!in || !Json::parseFromStream(builder, in, &scene, &errors))
     {
-      vtkErrorMacro("cannot read the scene description " << (this->FileName ? this->FileName : "")
-                                                         << " " << errors);
-      return false;
+      throw Damaged("not a JSON file " + errors);
+    }
+    const size_t slash = name.find_last_of('/');
+    const std::string dir = slash == std::string::npos ? std::string() : name.substr(0, slash + 1);
+    const Obj obj = ReadObj(dir + Text(Field(scene, "obj", "the description"), "obj"));
+    const Json::Value& materials = Field(scene, "materials", "the description");
+    for (const std::string& material : obj.Materials)
+    {
+      actors.push_back(MaterialActor(obj, material,
+        Field(materials, material.c_str(), "materials"), "materials." + material));
+    }
+    const Json::Value& lightList = Field(scene, "lights", "the description");
+    if (!lightList.isArray())
+    {
+      throw Damaged("lights is not a list");
+    }
+    for (Json::ArrayIndex i = 0; i < lightList.size(); ++i)
+    {
+      lights.push_back(SceneLight(lightList[i], "lights[" + std::to_string(i) + "]"));
+    }
+    const Json::Value& cam = Field(scene, "camera", "the description");
+    position = Vector(Field(cam, "position", "camera"), "camera.position");
+    focal = Vector(Field(cam, "focal_point", "camera"), "camera.focal_point");
+    up = Vector(Field(cam, "view_up", "camera"), "camera.view_up");
+    viewAngle = Number(Field(cam, "view_angle", "camera"), "camera.view_angle");
+    if (!(viewAngle > 0.0 && viewAngle < 180.0) || position == focal || up == Vec3{})
+    {
+      throw Damaged("the camera has no view (angle, focal point or view up)");
+    }
+    background = Vector(Field(scene, "background", "the description"), "background");
+    const Json::Value& imageSize = Field(scene, "size", "the description");
+    for (Json::ArrayIndex i = 0; i < 2; ++i)
+    {
+      if (!imageSize.isArray() || imageSize.size() != 2 || !imageSize[i].isInt() ||
+        imageSize[i].asInt() < 1 || imageSize[i].asInt() > 16384)
+      {
+        throw Damaged("size is not two pixel counts in [1, 16384]");
+      }
+      size[i] = imageSize[i].asInt();
     }
   }
-  const std::string name = this->FileName;
-  const size_t slash = name.find_last_of('/');
-  const std::string dir = slash == std::string::npos ? std::string() : name.substr(0, slash + 1);
-  std::ifstream obj(dir + scene["obj"].asString());
-  if (!obj)
+  catch (const std::exception& e)
   {
-    vtkErrorMacro("cannot read " << dir + scene["obj"].asString());
+    vtkErrorMacro("cannot read the scene description " << name << ": " << e.what());
     return false;
   }
 
-  // The OBJ as written above: global points (with colours), normals, and per material its
-  // faces; each material becomes one actor with the points its faces use.
-  std::vector<Vec3> points, colors, normals;
-  // per material its faces: corner point and normal indices (-1: none)
-  std::map<std::string, std::vector<std::vector<std::pair<long, long>>>> faces;
-  std::vector<std::string> order;
-  std::string line, current;
-  while (std::getline(obj, line))
+  for (vtkActor* actor : actors)
   {
-    std::istringstream s(line);
-    std::string tag;
-    s >> tag;
-    if (tag == "v" || tag == "vn")
-    {
-      Vec3 p{}, c{ 1.0, 1.0, 1.0 };
-      s >> p[0] >> p[1] >> p[2];
-      if (tag == "v" && (s >> c[0] >> c[1] >> c[2]))
-      {
-        colors.push_back(c);
-      }
-      (tag == "v" ? points : normals).push_back(p);
-    }
-    else if (tag == "usemtl")
-    {
-      s >> current;
-      order.push_back(current);
-    }
-    else if (tag == "f")
-    {
-      std::vector<std::pair<long, long>> face;
-      std::string corner;
-      while (s >> corner)
-      {
-        const size_t slashes = corner.find("//");
-        face.emplace_back(std::stol(corner) - 1,
-          slashes == std::string::npos ? -1 : std::stol(corner.substr(slashes + 2)) - 1);
-      }
-      faces[current].push_back(face);
-    }
-  }
-
-  for (const std::string& material : order)
-  {
-    const Json::Value& m = scene["materials"][material];
-    const std::string normalMode = m["normals"].asString();
-    const bool colored = m.get("vertex_colors", false).asBool();
-    vtkNew<vtkPolyData> pd;
-    vtkNew<vtkPoints> pts;
-    vtkNew<vtkCellArray> polys;
-    vtkNew<vtkFloatArray> n;
-    n->SetNumberOfComponents(3);
-    vtkNew<vtkUnsignedCharArray> rgb;
-    rgb->SetNumberOfComponents(3);
-    std::map<long, vtkIdType> local;
-    for (const auto& face : faces[material])
-    {
-      polys->InsertNextCell(static_cast<int>(face.size()));
-      for (const auto& corner : face)
-      {
-        auto found = local.find(corner.first);
-        if (found == local.end())
-        {
-          found =
-            local.emplace(corner.first, pts->InsertNextPoint(points[corner.first].data())).first;
-          if (normalMode == "point")
-          {
-            n->InsertNextTuple(normals[corner.second].data());
-          }
-          for (int c = 0; colored && c < 3; ++c)
-          {
-            rgb->InsertNextValue(static_cast<unsigned char>(
-              std::lround(255.0 * SrgbDecode(colors[corner.first][c]))));
-          }
-        }
-        polys->InsertCellPoint(found->second);
-      }
-      if (normalMode == "cell")
-      {
-        n->InsertNextTuple(normals[face[0].second].data());
-      }
-    }
-    pd->SetPoints(pts);
-    pd->SetPolys(polys);
-    if (normalMode == "point")
-    {
-      pd->GetPointData()->SetNormals(n);
-    }
-    else if (normalMode == "cell")
-    {
-      pd->GetCellData()->SetNormals(n);
-    }
-    vtkNew<vtkPolyDataMapper> mapper;
-    mapper->SetInputData(pd);
-    mapper->SetScalarVisibility(colored);
-    if (colored)
-    {
-      pd->GetPointData()->SetScalars(rgb);
-      mapper->SetColorModeToDirectScalars();
-    }
-    vtkNew<vtkActor> actor;
-    actor->SetMapper(mapper);
-    const Json::Value& vtk = m["vtk"];
-    vtkProperty* p = actor->GetProperty();
-    p->SetAmbient(vtk["ambient"].asDouble());
-    p->SetAmbientColor(FromJson(vtk["ambient_color"]).data());
-    p->SetDiffuse(vtk["diffuse"].asDouble());
-    p->SetDiffuseColor(FromJson(vtk["diffuse_color"]).data());
-    p->SetSpecular(vtk["specular"].asDouble());
-    p->SetSpecularColor(FromJson(vtk["specular_color"]).data());
-    p->SetSpecularPower(vtk["specular_power"].asDouble());
-    if (m.isMember("emission"))
-    {
-      const Vec3 e = FromJson(m["emission"]);
-      vtkVoxelGIPass::SetPropEmission(actor, e[0], e[1], e[2]);
-    }
     renderer->AddActor(actor);
   }
-
   renderer->AutomaticLightCreationOff();
-  for (const Json::Value& l : scene["lights"])
+  for (vtkLight* light : lights)
   {
-    vtkNew<vtkLight> light;
-    light->SetLightTypeToSceneLight();
-    light->SetColor(FromJson(l["color"]).data());
-    light->SetIntensity(l["intensity"].asDouble());
-    if (l["type"].asString() == "directional")
-    {
-      const Vec3 d = FromJson(l["direction"]);
-      light->SetPositional(false);
-      light->SetPosition(-d[0], -d[1], -d[2]);
-      light->SetFocalPoint(0.0, 0.0, 0.0);
-    }
-    else
-    {
-      light->SetPositional(true);
-      light->SetConeAngle(90.0);
-      light->SetPosition(FromJson(l["position"]).data());
-    }
-    if (l["headlight"].asBool())
-    {
-      light->SetLightTypeToHeadlight();
-    }
-    else if (l.isMember("camera_light"))
-    {
-      light->SetLightTypeToCameraLight();
-      light->SetPosition(FromJson(l["camera_light"]["position"]).data());
-      light->SetFocalPoint(FromJson(l["camera_light"]["focal_point"]).data());
-    }
     renderer->AddLight(light);
   }
-  const Json::Value& cam = scene["camera"];
   vtkCamera* camera = renderer->GetActiveCamera();
-  camera->SetPosition(FromJson(cam["position"]).data());
-  camera->SetFocalPoint(FromJson(cam["focal_point"]).data());
-  camera->SetViewUp(FromJson(cam["view_up"]).data());
-  camera->SetViewAngle(cam["view_angle"].asDouble());
-  renderer->SetBackground(FromJson(scene["background"]).data());
+  camera->SetPosition(position.data());
+  camera->SetFocalPoint(focal.data());
+  camera->SetViewUp(up.data());
+  camera->SetViewAngle(viewAngle);
+  renderer->SetBackground(background.data());
   renderer->ResetCameraClippingRange();
-  this->Size[0] = scene["size"][0].asInt();
-  this->Size[1] = scene["size"][1].asInt();
+  this->Size[0] = size[0];
+  this->Size[1] = size[1];
   return true;
 }
 

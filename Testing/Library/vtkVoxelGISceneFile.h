@@ -56,14 +56,21 @@ public:
 
   /**
    * Write `renderer`'s scene. Returns false, writes nothing and reports one error listing
-   * every problem when the scene cannot be described.
+   * every problem when the scene cannot be described (non-finite coordinates, normals,
+   * materials, lights, camera or background among them: they would not read back). Actors
+   * without polygons are left out with a note. Returns false with one error, leaving no new
+   * file, when the files cannot be written (a missing directory, a full device, a directory's
+   * or an empty name).
    */
   bool Write(vtkRenderer* renderer);
 
   /**
    * Add the described actors and lights to `renderer`, set its camera and background, and
-   * set Size to the description's image size. Returns false (with an error) when the files
-   * cannot be read.
+   * set Size to the description's image size. OBJ files from other writers read too
+   * (relative indices, texture coordinates left out). Returns false with one error naming the
+   * field or line, and leaves the renderer as it was, when the files are missing or damaged:
+   * an index beyond the points, a token that is not a finite number, a JSON field missing or
+   * of the wrong type.
    */
   bool Read(vtkRenderer* renderer);
 
