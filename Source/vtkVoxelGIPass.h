@@ -31,8 +31,9 @@
  * reports it once and keeps rendering VTK's image.
  *
  * @code
- * vtkNew<vtkVoxelGIPass> gi;
+ * vtkVoxelGIPass* gi = vtkVoxelGIPass::New();
  * renderer->SetPass(gi);
+ * gi->Delete(); // the renderer holds it
  * gi->SetVoxelResolution(128);
  * renderWindow->Render();
  * @endcode
@@ -130,16 +131,24 @@ public:
   bool GetUsedHardwareConservativeRaster() const;
 
   /**
-   * Emission of a prop, as linear RGB radiance (0 or absent: not emissive). Stored in the
-   * prop's property keys, read by this pass. Negative or non-finite values are rejected.
+   * The property key that holds a prop's emission (see SetPropEmission()).
    */
   static vtkInformationDoubleVectorKey* EMISSION();
+
+  /**
+   * Make `prop` emit linear RGB radiance (r, g, b) (all 0: not emissive), stored in its
+   * property keys and read by this pass. Negative or non-finite values are rejected.
+   */
   static void SetPropEmission(vtkProp* prop, double r, double g, double b);
+
+  /**
+   * The property key that marks a prop dynamic (see SetPropDynamic()).
+   */
+  static vtkInformationIntegerKey* DYNAMIC();
 
   /**
    * Mark a prop as dynamic (revoxelized alone whenever it changes) or static.
    */
-  static vtkInformationIntegerKey* DYNAMIC();
   static void SetPropDynamic(vtkProp* prop, bool dynamic);
 
   enum Stages

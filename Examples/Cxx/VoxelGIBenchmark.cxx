@@ -592,6 +592,10 @@ int main(int argc, char* argv[])
     starts.push_back(vtkSmartPointer<vtkCamera>::New());
     starts.back()->DeepCopy(view->GetActiveCamera());
   }
+  // Progress on stderr after each run: a software renderer takes minutes per sequence.
+  const auto began = std::chrono::steady_clock::now();
+  const std::size_t runs = 2 * selected.size();
+  std::size_t runsDone = 0;
   for (const Sequence* sequence : selected)
   {
     for (vtkVoxelGIPass* pass : passes)
@@ -657,6 +661,13 @@ int main(int argc, char* argv[])
         }
         csv << "," << ran << "\n";
       }
+      const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+      ++runsDone;
+      std::cerr << "[" << runsDone << "/" << runs << "] " << sequence->Name
+                << (timed ? " with stage timers" : "") << ": " << std::fixed
+                << std::setprecision(1) << elapsed << " s so far, about "
+                << elapsed / runsDone * (runs - runsDone) << " s left" << std::endl;
     }
     sequence->Setup(false);
   }

@@ -1,6 +1,6 @@
 """Interactive voxel GI on the Cornell box. Keys:
     g  GI on/off            o  ambient occlusion on/off     s  specular cone on/off
-    v  next debug view      b  bounces 0/1/2                q  quit
+    v  next debug view      b  bounces 0..4                 q  quit
 
     PYTHONPATH=build/lib/python3/dist-packages /usr/bin/python3 Examples/Python/interactive.py
         opens a window;
@@ -34,7 +34,7 @@ def on_key(interactor, gi, window):
     elif key == "v":
         gi.SetDebugView((gi.GetDebugView() + 1) % len(VIEWS))
     elif key == "b":
-        gi.SetBounces((gi.GetBounces() + 1) % 3)
+        gi.SetBounces((gi.GetBounces() + 1) % 5)  # back to the default, 4
     else:
         return
     print("GI %s, AO %.1f, specular %s, bounces %d, view %s" % (

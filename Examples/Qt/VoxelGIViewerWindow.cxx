@@ -76,6 +76,8 @@ VoxelGIViewerWindow::VoxelGIViewerWindow(QWidget* parent)
   this->Settings->setRenderWindow(this->Window);
   connect(this->Settings, &vtkVoxelGISettingsWidget::settingChanged, this,
     [this]() { this->View->renderWindow()->Render(); });
+  connect(this->Settings, &vtkVoxelGISettingsWidget::defaultsRestored, this,
+    [this]() { this->View->renderWindow()->Render(); });
   auto* scroll = new QScrollArea(this);
   scroll->setWidget(this->Settings);
   scroll->setWidgetResizable(true);

@@ -257,11 +257,16 @@ void vtkVoxelGISettingsWidget::resetToDefaults()
   {
     return;
   }
+  const vtkMTimeType before = this->Pass->GetMTime();
   for (int i = 0; i < vtkVoxelGISettings::GetNumberOfSettings(); ++i)
   {
     vtkVoxelGISettings::SetValue(this->Pass, vtkVoxelGISettings::GetName(i), vtkVoxelGISettings::GetDefault(i));
   }
   this->updateControls();
+  if (this->Pass->GetMTime() != before)
+  {
+    Q_EMIT this->defaultsRestored(); // one render for all of them, not one per setting
+  }
 }
 
 void vtkVoxelGISettingsWidget::updateTimings()

@@ -56,6 +56,8 @@ public Q_SLOTS:
 Q_SIGNALS:
   /// A control changed a setting of the pass.
   void settingChanged(const QString& name, double value);
+  /// resetToDefaults() changed settings of the pass (once, however many changed).
+  void defaultsRestored();
 
 private:
   void apply(const QString& name, double value);

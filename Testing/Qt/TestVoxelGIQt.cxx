@@ -18,6 +18,7 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QSignalSpy>
 #include <QSpinBox>
 #include <QSurfaceFormat>
 #include <QtTest>
@@ -132,9 +133,13 @@ private Q_SLOTS:
     vtkNew<vtkVoxelGIPass> pass;
     vtkVoxelGISettingsWidget panel;
     panel.setPass(pass);
+    QSignalSpy restored(&panel, &vtkVoxelGISettingsWidget::defaultsRestored);
+    panel.resetToDefaults();
+    QCOMPARE(restored.count(), 0); // nothing changed: nothing to render again
     pass->SetBounces(7);
     pass->SetVoxelResolution(32);
     panel.resetToDefaults();
+    QCOMPARE(restored.count(), 1); // the viewer renders again, once
     for (int i = 0; i < vtkVoxelGISettings::GetNumberOfSettings(); ++i)
     {
       QCOMPARE(vtkVoxelGISettings::GetValue(pass, vtkVoxelGISettings::GetName(i)),
