@@ -88,6 +88,8 @@ public:
 
   /// A stage could not be prepared in `configuration`: say why (once for it).
   void Refuse(const Configuration& configuration, const std::string& error);
+  /// Try the refused configuration again (Invalidate(): the program says things changed).
+  void Retry() { this->HasRefused = false; }
   /// Whether `configuration` was refused before.
   bool Refused(const Configuration& configuration) const
   {

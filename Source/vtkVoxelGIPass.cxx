@@ -127,11 +127,10 @@ int vtkVoxelGIPass::GetGridResolution() const
 
 void vtkVoxelGIPass::GetGridOrigin(double origin[3]) const
 {
-  const voxelgi::VoxelGrid grid = this->TracedVoxels().Grid;
-  for (int a = 0; a < 3; ++a)
-  {
-    origin[a] = grid.Origin[a];
-  }
+  const glm::dvec3 corner = this->TracedVoxels().Grid.Origin;
+  origin[0] = corner.x;
+  origin[1] = corner.y;
+  origin[2] = corner.z;
 }
 
 double vtkVoxelGIPass::GetGridVoxelSize() const
@@ -147,6 +146,7 @@ bool vtkVoxelGIPass::GetUsedHardwareConservativeRaster() const
 void vtkVoxelGIPass::Invalidate()
 {
   this->Internal->Planner.Scan.Invalidate();
+  this->Internal->Gate.Retry();
 }
 
 double vtkVoxelGIPass::GetRankTrafficBytes() const

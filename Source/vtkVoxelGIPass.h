@@ -110,7 +110,8 @@ public:
   ///@}
 
   /**
-   * Rebuild the voxels (fully) at the next render, whatever the update policy.
+   * Rebuild the voxels (fully) at the next render, whatever the update policy; after a
+   * refusal (e.g. too little memory), try the same settings again.
    */
   void Invalidate();
 
@@ -217,7 +218,7 @@ public:
    * GetVoxelMemoryBytes() reports once a scene with (or without) emissive props has been
    * rendered, shadow maps not included. Before allocating, the pass compares it with the
    * memory the GL reports free; a configuration that does not fit is refused with one error
-   * and renders VTK's image until a setting changes.
+   * and renders VTK's image until a setting changes or Invalidate() is called.
    */
   unsigned long long GetRequiredVoxelMemoryBytes(bool emission);
 

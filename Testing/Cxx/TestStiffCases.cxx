@@ -575,8 +575,18 @@ const std::map<std::string, std::function<int()>>& Cases()
         {
           s.Window->Render();
         }
+        // Invalidate() retries the refused settings: checked again, and refused again once.
+        const std::string once = s.Log.Text;
+        s.GI->Invalidate();
+        s.Window->Render();
+        s.Window->Render();
         setrlimit(RLIMIT_AS, &before);
-        const std::size_t first = s.Log.Text.find("VoxelResolution 256 needs");
+        const std::size_t first = once.find("VoxelResolution 256 needs");
+        const std::size_t again = s.Log.Text.find("VoxelResolution 256 needs", once.size());
+        VOXELGI_CHECK(again != std::string::npos, "Invalidate() did not retry: " << s.Log.Text);
+        VOXELGI_CHECK(s.Log.Text.find("Voxel GI disabled", again + 1) == std::string::npos,
+          "the retry's error was repeated");
+        s.Log.Text = once;
         VOXELGI_CHECK(first != std::string::npos && s.Log.Has("MiB are free (address space") &&
             s.Log.Has("until a setting changes"),
           "no clear error: " << s.Log.Text);
