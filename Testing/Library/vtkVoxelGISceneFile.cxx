@@ -36,6 +36,7 @@
 
 #include <algorithm>
 #include <array>
+#include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -686,19 +687,19 @@ struct Obj
   std::vector<std::string> Materials; // in the order of first use
 };
 
+// Whether all of `token` is one number of type T.
+template <typename T>
+bool WholeNumber(const std::string& token, T& value)
+{
+  const char* end = token.data() + token.size();
+  const auto result = std::from_chars(token.data(), end, value);
+  return result.ec == std::errc() && result.ptr == end;
+}
+
 double ObjNumber(const std::string& token, const std::string& where)
 {
-  size_t used = 0;
   double x = 0.0;
-  try
-  {
-    x = std::stod(token, &used);
-  }
-  catch (const std::exception&)
-  {
-    used = 0;
-  }
-  if (used == 0 || used != token.size() || !std::isfinite(x))
+  if (!WholeNumber(token, x) || !std::isfinite(x))
   {
     throw Damaged(where + ": \"" + token + "\" is not a finite number");
   }
@@ -708,19 +709,10 @@ double ObjNumber(const std::string& token, const std::string& where)
 // A 1-based index, or a relative one (-1: the last defined), into `count` items.
 long ObjIndex(const std::string& token, size_t count, const std::string& where)
 {
-  size_t used = 0;
   long k = 0;
-  try
-  {
-    k = std::stol(token, &used);
-  }
-  catch (const std::exception&)
-  {
-    used = 0;
-  }
+  const bool number = WholeNumber(token, k);
   const long resolved = k > 0 ? k - 1 : static_cast<long>(count) + k;
-  if (used == 0 || used != token.size() || k == 0 || resolved < 0 ||
-    resolved >= static_cast<long>(count))
+  if (!number || k == 0 || resolved < 0 || resolved >= static_cast<long>(count))
   {
     throw Damaged(where + ": index \"" + token + "\" names none of the " +
       std::to_string(count) + " defined before it");
