@@ -256,7 +256,8 @@ void Gate::Refuse(const Configuration& configuration, const std::string& error)
   if (!this->Refused(configuration))
   {
     vtkErrorWithObjectMacro(this->Owner,
-      << "Voxel GI disabled: " << error << ". Rendering without GI until a setting changes or Invalidate() is called.");
+      << "Voxel GI disabled: " << error
+      << ". Rendering without GI until a setting changes or Invalidate() is called.");
   }
   this->HasRefused = true;
   this->RefusedConfiguration = configuration;

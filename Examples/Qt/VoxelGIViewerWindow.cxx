@@ -74,10 +74,9 @@ VoxelGIViewerWindow::VoxelGIViewerWindow(QWidget* parent)
   this->Settings = new vtkVoxelGISettingsWidget(this);
   this->Settings->setPass(this->Pass);
   this->Settings->setRenderWindow(this->Window);
-  connect(this->Settings, &vtkVoxelGISettingsWidget::settingChanged, this,
-    [this]() { this->View->renderWindow()->Render(); });
-  connect(this->Settings, &vtkVoxelGISettingsWidget::defaultsRestored, this,
-    [this]() { this->View->renderWindow()->Render(); });
+  const auto render = [this]() { this->View->renderWindow()->Render(); };
+  connect(this->Settings, &vtkVoxelGISettingsWidget::settingChanged, this, render);
+  connect(this->Settings, &vtkVoxelGISettingsWidget::defaultsRestored, this, render);
   auto* scroll = new QScrollArea(this);
   scroll->setWidget(this->Settings);
   scroll->setWidgetResizable(true);
