@@ -86,6 +86,10 @@ bool Composite::Read(
     return false;
   }
   renWin->MakeCurrent();
+  if (!renWin->IsCurrent())
+  {
+    return false; // another context would answer (a window current in another thread)
+  }
   // GL writes the texture as it holds it: size the buffer from that, never from what
   // vtkTextureObject was last asked for (a resize GL refused keeps the old storage).
   StoredSize(texture, w, h);

@@ -89,6 +89,8 @@ struct Frame
 {
   vtkRenderer* Renderer = nullptr;
   vtkOpenGLRenderWindow* Window = nullptr;
+  /// When the window's current render and the one before started (WindowFollower).
+  std::array<vtkMTimeType, 2> RenderStarts{ { 0, 0 } };
   const vtkRenderState* State = nullptr;
   /// The pass that renders VTK's own image (vtkVoxelGIPass's delegate).
   vtkRenderPass* Delegate = nullptr;

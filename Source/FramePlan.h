@@ -12,7 +12,9 @@
 
 #include "SceneScan.h"
 
-#include "vtkType.h" // for vtkMTimeType
+#include "vtkRenderer.h"    // for vtkWeakPointer<vtkRenderer>
+#include "vtkType.h"        // for vtkMTimeType
+#include "vtkWeakPointer.h" // for vtkWeakPointer
 
 #include <vector>
 
@@ -58,6 +60,15 @@ struct RadianceState
 {
   /// Counts the relights a trace cannot reuse.
   unsigned long long Generation = 0;
+};
+
+/// A pass's last frame: its renderer (null once deleted) and when it was presented, on VTK's
+/// modification clock (0: never). A pass that shares the voxels asks whether they are of this
+/// render of the window.
+struct PresentedFrame
+{
+  vtkWeakPointer<vtkRenderer> Renderer;
+  vtkMTimeType Time = 0;
 };
 
 class FrameHistory

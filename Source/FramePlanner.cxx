@@ -8,12 +8,44 @@
 #include "StageIds.h"
 
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkRendererCollection.h"
+#include "vtkTimeStamp.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace voxelgi
 {
+namespace
+{
+// Where `renderer` draws in a render of `window`: VTK draws layer by layer, each in the order
+// the renderers were added (-1: not in the window).
+long DrawOrder(vtkRenderWindow* window, vtkRenderer* renderer)
+{
+  vtkRendererCollection* renderers = window->GetRenderers();
+  const long count = renderers->GetNumberOfItems();
+  for (long i = 0; i < count; ++i)
+  {
+    if (renderers->GetItemAsObject(static_cast<int>(i)) == renderer)
+    {
+      return renderer->GetLayer() * count + i;
+    }
+  }
+  return -1;
+}
+
+// Whether a source's voxels are of this render of the window: presented in it when the
+// source draws first, else in the render before (a sharer drawn before its source traces
+// the voxels of the source's last frame).
+bool Current(const Frame& frame, const PresentedFrame& source)
+{
+  const long order = source.Renderer ? DrawOrder(frame.Window, source.Renderer) : -1;
+  return order >= 0 &&
+    source.Time >
+    frame.RenderStarts[order < DrawOrder(frame.Window, frame.Renderer) ? 0 : 1];
+}
+}
+
 
 bool FramePlanner::PlanVoxels(Frame& frame, bool admitted)
 {
@@ -88,6 +120,15 @@ bool FramePlanner::PlanSource(Frame& frame, const VoxelView& source, vtkMTimeTyp
     return false;
   }
   this->Notices.Clear(Gate::Source);
+  if (source.Presented.Time != 0 && !Current(frame, source.Presented))
+  {
+    this->Notices.Error(Gate::SourceGone,
+      "Voxel GI cannot run: its VoxelSource did not render in this window's last frame (its "
+      "renderer was removed or not drawn, or the source pass left it): its voxels are stale. "
+      "Rendering without GI.");
+    return false;
+  }
+  this->Notices.Clear(Gate::SourceGone);
   // The source says why when it has no GI; before its first frame there is nothing to trace.
   bool changed = false;
   if (!source.Active || !source.Window ||
@@ -150,11 +191,15 @@ void FramePlanner::Voxelized(const Frame& frame)
   this->History.VoxelsWritten();
 }
 
-void FramePlanner::Lit(const Frame& frame, bool valid)
+void FramePlanner::Lit(const Frame& frame, bool valid, const std::string& note)
 {
   if (valid)
   {
     this->Lights.MarkLit();
+  }
+  if (!note.empty())
+  {
+    this->Notices.Report(note, false);
   }
   this->History.Lit(frame.Plan.Lights, valid, frame.Config, frame.Grid.Resolution);
 }
@@ -176,6 +221,9 @@ void FramePlanner::Presented(const Frame& frame, bool traced, vtkMTimeType setti
   {
     this->Scan.RefreshSignatures();
   }
+  vtkTimeStamp now;
+  now.Modified();
+  this->Last = { frame.Renderer, now.GetMTime() };
 }
 
 void FramePlanner::Forget()

@@ -13,6 +13,8 @@
 
 #include "vtkType.h" // for vtkMTimeType
 
+#include <string>
+
 namespace voxelgi
 {
 struct Frame;
@@ -43,12 +45,14 @@ public:
 
   /// The Voxelize stage rewrote the voxels as the plan said.
   void Voxelized(const Frame& frame);
-  /// The relight ran (`valid`) or could not.
-  void Lit(const Frame& frame, bool valid);
+  /// The relight ran (`valid`) or could not; `note` (if any) is said as a warning.
+  void Lit(const Frame& frame, bool valid, const std::string& note);
   /// The frame is drawn: with a traced image (`traced`) or not.
   void Presented(const Frame& frame, bool traced, vtkMTimeType settingsTime);
   /// The voxels and what was made from them are gone: the next frame rebuilds all.
   void Forget();
+  /// The last frame Presented() was told of.
+  const PresentedFrame& LastPresented() const { return this->Last; }
 
   SceneScan Scan;
   LightBlock Lights;
@@ -62,6 +66,7 @@ private:
 
   Gate& Notices;
   Ranks& Processes;
+  PresentedFrame Last;
 };
 
 }

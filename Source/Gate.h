@@ -56,6 +56,7 @@ public:
     Software,
     Unlit,
     Source,
+    SourceGone,
     OtherRank,
     NoticeCount
   };

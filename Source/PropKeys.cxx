@@ -71,7 +71,10 @@ std::array<double, 3> PropEmission(vtkProp* prop)
 
 void SetDynamicKey(vtkProp* prop, bool dynamic)
 {
-  EnsurePropertyKeys(prop)->Set(DynamicKey(), dynamic ? 1 : 0);
+  if (prop)
+  {
+    EnsurePropertyKeys(prop)->Set(DynamicKey(), dynamic ? 1 : 0);
+  }
 }
 
 bool PropDynamic(vtkProp* prop)

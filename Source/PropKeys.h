@@ -31,7 +31,7 @@ bool SetEmissionKey(vtkProp* prop, const double rgb[3]);
 /// A prop's emission key, non-finite or negative values as 0.
 std::array<double, 3> PropEmission(vtkProp* prop);
 
-/// Mark a prop dynamic or static.
+/// Mark a prop dynamic or static (no prop: nothing).
 void SetDynamicKey(vtkProp* prop, bool dynamic);
 
 /// Whether the prop is marked dynamic (SetPropDynamic).

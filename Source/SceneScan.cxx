@@ -7,6 +7,7 @@
 #include "vtkCamera.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
+#include "vtkDataArray.h"
 #include "vtkDataObject.h"
 #include "vtkImageSlice.h"
 #include "vtkInformation.h"
@@ -14,6 +15,7 @@
 #include "vtkLightCollection.h"
 #include "vtkMapper.h"
 #include "vtkMath.h"
+#include "vtkMatrix4x4.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPropCollection.h"
@@ -34,9 +36,8 @@ namespace voxelgi
 
 namespace
 {
-/// Warning for an actor whose input has NaN or Inf point coordinates, or empty.
-/// (The points of a polydata input, or of every polydata block of a composite input.)
-std::string NonFinitePoints(vtkActor* actor)
+/// The points of an actor's polydata input, or of every polydata block of a composite input.
+std::vector<vtkPoints*> PointSets(vtkActor* actor)
 {
   std::vector<vtkPoints*> pointSets;
   vtkDataObject* input = actor->GetMapper()->GetInputDataObject(0, 0);
@@ -56,9 +57,15 @@ std::string NonFinitePoints(vtkActor* actor)
   {
     pointSets.push_back(poly->GetPoints());
   }
+  return pointSets;
+}
+
+/// Warning for an actor whose input has NaN or Inf point coordinates, or empty.
+std::string NonFinitePoints(vtkActor* actor)
+{
   vtkIdType bad = 0, total = 0;
   double p[3];
-  for (vtkPoints* points : pointSets)
+  for (vtkPoints* points : PointSets(actor))
   {
     for (vtkIdType i = 0; points && i < points->GetNumberOfPoints(); ++i)
     {
@@ -77,7 +84,6 @@ std::string NonFinitePoints(vtkActor* actor)
   return text.str();
 }
 
-
 void Merge(double bounds[6], const double* b, bool first)
 {
   for (int i = 0; i < 3; ++i)
@@ -85,6 +91,38 @@ void Merge(double bounds[6], const double* b, bool first)
     bounds[2 * i] = first ? b[2 * i] : std::min(bounds[2 * i], b[2 * i]);
     bounds[2 * i + 1] = first ? b[2 * i + 1] : std::max(bounds[2 * i + 1], b[2 * i + 1]);
   }
+}
+
+/// World bounds of the finite coordinates of an actor's points: VTK's bounds of an input
+/// with one Inf point are infinite, and the actor's other triangles still belong in the
+/// grid. False when it has no finite point.
+bool FiniteBounds(vtkActor* actor, double bounds[6])
+{
+  double local[6];
+  bool any = false;
+  for (vtkPoints* points : PointSets(actor))
+  {
+    double b[6];
+    for (int c = 0; points && c < 3; ++c)
+    {
+      points->GetData()->GetFiniteRange(b + 2 * c, c);
+    }
+    if (points && b[0] <= b[1] && b[2] <= b[3] && b[4] <= b[5])
+    {
+      Merge(local, b, !any);
+      any = true;
+    }
+  }
+  for (int corner = 0; any && corner < 8; ++corner)
+  {
+    double p[4] = { local[corner & 1], local[2 + ((corner >> 1) & 1)],
+      local[4 + ((corner >> 2) & 1)], 1.0 };
+    actor->GetMatrix()->MultiplyPoint(p, p);
+    const double world[6] = { p[0] / p[3], p[0] / p[3], p[1] / p[3], p[1] / p[3], p[2] / p[3],
+      p[2] / p[3] };
+    Merge(bounds, world, corner == 0);
+  }
+  return any && std::all_of(bounds, bounds + 6, [](double v) { return std::isfinite(v); });
 }
 }
 
@@ -166,11 +204,16 @@ bool SceneScan::Collect(vtkRenderer* renderer, bool inRender,
       ++leftOut[reading.LeftOut];
       continue;
     }
+    double finite[6];
     if (!std::all_of(b, b + 6, [](double v) { return std::isfinite(v); }))
     {
-      warnings.emplace_back("An actor has non-finite bounds (NaN or Inf coordinates); it is left "
-                            "out of the voxel grid.");
-      continue;
+      auto* withPoints = vtkActor::SafeDownCast(prop);
+      if (!withPoints || !withPoints->GetMapper() || !FiniteBounds(withPoints, finite))
+      {
+        ++leftOut["non-finite bounds (no finite point)"];
+        continue;
+      }
+      b = finite;
     }
     // An image slice is voxelized through its proxy: a textured quad.
     vtkActor* actor = vtkActor::SafeDownCast(prop);

@@ -20,6 +20,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <vector>
 
 namespace voxelgi
@@ -40,6 +41,12 @@ int LayerCount(vtkLight* light)
     return 0;
   }
   return light->GetPositional() && light->GetConeAngle() >= 90.0 ? 6 : 1;
+}
+
+// 32-bit depth per texel.
+std::size_t MapBytes(int size, int layers)
+{
+  return static_cast<std::size_t>(size) * size * layers * 4;
 }
 
 // Aim `camera` from the light over the grid and give it an explicit projection: orthographic
@@ -128,7 +135,17 @@ bool OutsideView(const double* bounds, vtkMatrix4x4* clipFromWorld)
 }
 }
 
-bool ShadowMaps::Prepare(const Frame& frame, std::string& error)
+std::size_t ShadowMaps::RequiredBytes(int size, const std::vector<vtkLight*>& lights)
+{
+  int layers = 0;
+  for (std::size_t l = 0; l < lights.size() && l < MaxLights; ++l)
+  {
+    layers += LayerCount(lights[l]);
+  }
+  return MapBytes(size, layers);
+}
+
+bool ShadowMaps::Prepare(const Frame& frame, std::string& error, std::string& note)
 {
   const std::vector<vtkLight*>& used = frame.Lights->GetLights();
   int count = 0;
@@ -151,13 +168,68 @@ bool ShadowMaps::Prepare(const Frame& frame, std::string& error)
     this->Maps.Release();
     return true;
   }
-  if (!this->Maps.Allocate(frame.Config.ShadowMapResolution, count) ||
-    !(this->Buffer.IsAllocated() || this->Buffer.Allocate(sizeof(Block))))
+  if (!this->Allot(frame.Config.ShadowMapResolution, count, note))
   {
-    error = "could not allocate the shadow maps";
+    // Not even the smallest maps: every light raymarches the voxels instead.
+    for (glsl::ivec4& entry : this->Data.shadowLights)
+    {
+      entry = { -1, 0, 0, 0 };
+    }
+    this->Data.shadowInfo[0] = 0;
+  }
+  if (!(this->Buffer.IsAllocated() || this->Buffer.Allocate(sizeof(Block))))
+  {
+    error = "could not allocate the shadow maps' uniform buffer";
     return false;
   }
   return true;
+}
+
+bool ShadowMaps::Allot(int size, int layers, std::string& note)
+{
+  const bool decided = this->Wanted[0] == size && this->Wanted[1] == layers;
+  if (decided && (this->Maps.IsAllocated() || this->Granted == 0))
+  {
+    return this->Granted > 0;
+  }
+  this->Wanted[0] = size;
+  this->Wanted[1] = layers;
+  // The maps degrade instead of turning GI off: halved until they fit the memory the GL
+  // reports free (counting what the old maps hold) and GL allocates them.
+  std::string source;
+  const long long available = AvailableMemory(source);
+  const std::size_t budget = available < 0
+    ? static_cast<std::size_t>(-1)
+    : static_cast<std::size_t>(available) + this->Maps.Bytes();
+  this->Granted = size;
+  while (this->Granted >= MinSize &&
+    (MapBytes(this->Granted, layers) > budget || !this->Maps.Allocate(this->Granted, layers)))
+  {
+    this->Granted /= 2;
+  }
+  this->Granted = this->Granted >= MinSize ? this->Granted : 0;
+  if (this->Granted != size)
+  {
+    const auto mib = [](std::size_t bytes) { return bytes / (1024 * 1024); };
+    std::ostringstream msg;
+    msg << "ShadowMapResolution " << size << " needs " << mib(MapBytes(size, layers))
+        << " MiB for " << layers << " shadow maps, but "
+        << (available < 0 ? "GL could not allocate them"
+                          : std::to_string(mib(budget)) + " MiB are free (" + source + ")")
+        << ": ";
+    if (this->Granted > 0)
+    {
+      msg << "they are rendered at " << this->Granted << " texels (" << mib(MapBytes(this->Granted, layers))
+          << " MiB).";
+    }
+    else
+    {
+      msg << "the lights' shadows are raymarched through the voxels instead.";
+      this->Maps.Release();
+    }
+    note = msg.str();
+  }
+  return this->Granted > 0;
 }
 
 void ShadowMaps::Bind(ComputeProgram& program, SamplerBindings& samplers) const

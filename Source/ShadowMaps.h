@@ -17,6 +17,7 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 class vtkLight;
 class vtkWindow;
@@ -33,8 +34,12 @@ public:
   static constexpr int MaxLayers = VOXELGI_MAX_SHADOW_LAYERS;
 
   /// Choose the lights that get maps (block order) and allocate the maps at the frame's
-  /// ShadowMapResolution. Returns false with a message when they cannot be allocated.
-  bool Prepare(const Frame& frame, std::string& error);
+  /// ShadowMapResolution, or smaller where that does not fit (`note` says so, once per
+  /// resolution and map count); where no size fits, the lights raymarch the voxels. False
+  /// (with `error`) only when the maps' small uniform buffer cannot be allocated.
+  bool Prepare(const Frame& frame, std::string& error, std::string& note);
+  /// What the maps of `lights` take at `size` texels per side.
+  static std::size_t RequiredBytes(int size, const std::vector<vtkLight*>& lights);
   /// Render the maps with the frame's voxelized actors as casters; upload the block.
   void Run(const Frame& frame);
   /// Whether any light has a map.
@@ -46,6 +51,7 @@ public:
   ShadowMapArray Maps;
   void ReleaseGraphicsResources(vtkWindow* window)
   {
+    this->Wanted[0] = this->Wanted[1] = this->Granted = 0;
     this->Maps.Release();
     this->Buffer.Release();
     this->Copies.ReleaseGraphicsResources(window);
@@ -61,6 +67,13 @@ private:
       offsetof(Block, shadowInfo) == 64 * MaxLayers + 32 * MaxLights &&
       sizeof(Block) == 64 * MaxLayers + 32 * MaxLights + 16,
     "not std140");
+
+  /// Allocate `layers` maps of `size` or, where they do not fit, the largest halving down to
+  /// MinSize (0: none fits); decided again only when the size or count asked for changes.
+  bool Allot(int size, int layers, std::string& note);
+  static constexpr int MinSize = 128;
+  int Wanted[2] = { 0, 0 }; // the size and count last asked for
+  int Granted = 0;          // the size allocated for them
 
   ViewRenderer View; // draws through each light's camera
   MapperCopies Copies; // depth-only draws never switch the user's mappers

@@ -53,6 +53,10 @@ bool ReadVolume(const VoxelView& view, int volume, vtkImageData* image)
     return false;
   }
   view.Window->MakeCurrent();
+  if (!view.Window->IsCurrent())
+  {
+    return false; // another context would answer (a window current in another thread)
+  }
   const vtkIdType n = static_cast<vtkIdType>(res) * res * res;
   vtkSmartPointer<vtkDataArray> array;
   switch (volume)

@@ -3,6 +3,7 @@
 #include "Frame.h"
 #include "GLHelpers.h"
 #include "LightVoxels.h"
+#include "ShadowMaps.h"
 #include "VoxelMipmap.h"
 #include "VoxelizePass.h"
 
@@ -11,10 +12,14 @@
 namespace voxelgi
 {
 
-VoxelMemoryNeed::VoxelMemoryNeed(bool emission, const Settings& settings)
+VoxelMemoryNeed::VoxelMemoryNeed(
+  bool emission, const Settings& settings, const std::vector<vtkLight*>& lights)
   : Voxelization(VoxelizePass::RequiredBytes(settings.VoxelResolution, emission))
   , Radiance(LightVoxels::RequiredBytes(settings.VoxelResolution, settings))
   , Mipmaps(VoxelMipmap::RequiredBytes(settings.VoxelResolution, settings))
+  , ShadowMaps(settings.LightOcclusion == LIGHT_OCCLUSION_SHADOW_MAPS
+        ? ShadowMaps::RequiredBytes(settings.ShadowMapResolution, lights)
+        : 0)
 {
 }
 
@@ -22,17 +27,17 @@ bool VoxelMemory::Fits(
   bool emission, const Settings& settings, std::size_t held, std::string& error)
 {
   const VoxelMemoryNeed need(emission, settings);
-  if (need.Total() == this->FittingBytes)
+  if (need.Volumes() == this->FittingBytes)
   {
     return true;
   }
   std::string source;
   const long long available = AvailableMemory(source);
-  if (available >= 0 && need.Total() > static_cast<unsigned long long>(available) + held)
+  if (available >= 0 && need.Volumes() > static_cast<unsigned long long>(available) + held)
   {
     const auto mib = [](unsigned long long bytes) { return bytes / (1024 * 1024); };
     std::ostringstream msg;
-    msg << "VoxelResolution " << settings.VoxelResolution << " needs " << mib(need.Total())
+    msg << "VoxelResolution " << settings.VoxelResolution << " needs " << mib(need.Volumes())
         << " MiB for its voxel volumes (voxelization " << mib(need.Voxelization)
         << ", radiance " << mib(need.Radiance) << ", mipmaps " << mib(need.Mipmaps)
         << " MiB) but only " << mib(available + held) << " MiB are free (" << source
@@ -40,7 +45,7 @@ bool VoxelMemory::Fits(
     error = msg.str();
     return false;
   }
-  this->FittingBytes = need.Total();
+  this->FittingBytes = need.Volumes();
   return true;
 }
 

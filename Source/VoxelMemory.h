@@ -8,17 +8,23 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
+
+class vtkLight;
 
 namespace voxelgi
 {
 struct Settings;
 
-/// What the voxel volumes of `settings` need, per stage (shadow maps not included).
+/// What the voxel volumes of `settings` need, per stage, and the shadow maps of `lights`.
 struct VoxelMemoryNeed
 {
-  std::size_t Voxelization, Radiance, Mipmaps;
-  VoxelMemoryNeed(bool emission, const Settings& settings);
-  std::size_t Total() const { return this->Voxelization + this->Radiance + this->Mipmaps; }
+  std::size_t Voxelization, Radiance, Mipmaps, ShadowMaps;
+  VoxelMemoryNeed(
+    bool emission, const Settings& settings, const std::vector<vtkLight*>& lights = {});
+  /// The volumes, refused when they do not fit (the shadow maps degrade instead).
+  std::size_t Volumes() const { return this->Voxelization + this->Radiance + this->Mipmaps; }
+  std::size_t Total() const { return this->Volumes() + this->ShadowMaps; }
 };
 
 class VoxelMemory

@@ -10,7 +10,7 @@
 namespace voxelgi
 {
 
-bool VoxelStages::Relight(const Frame& frame, std::string& error)
+bool VoxelStages::Relight(const Frame& frame, std::string& error, std::string& note)
 {
   // The light block is bound by the caller; the grid block too.
   bool ok = true;
@@ -18,7 +18,7 @@ bool VoxelStages::Relight(const Frame& frame, std::string& error)
   if (frame.Config.LightOcclusion == LIGHT_OCCLUSION_SHADOW_MAPS &&
     !frame.Processes->Distributed())
   {
-    ok = this->Shadows.Prepare(frame, error);
+    ok = this->Shadows.Prepare(frame, error, note);
     if (ok)
     {
       this->Shadows.Run(frame);

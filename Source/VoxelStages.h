@@ -33,8 +33,8 @@ struct VoxelStages
   VoxelBounce Bounce{ *Voxelize, Lighting, Mipmap };
 
   /// ShadowMaps (scene lights, one process), LightVoxels, Mipmap and Bounce; false with
-  /// `error` when one cannot be prepared.
-  bool Relight(const Frame& frame, std::string& error);
+  /// `error` when one cannot be prepared; `note` says what was made smaller than asked.
+  bool Relight(const Frame& frame, std::string& error, std::string& note);
   /// GPU memory of one kind of resource (vtkVoxelGIPass::Resources), and of all.
   unsigned long long AllocatedBytes(int resource) const;
   unsigned long long MemoryBytes() const;

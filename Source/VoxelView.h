@@ -36,6 +36,8 @@ struct VoxelView
   const LightBlock* Lights = nullptr;
   const ShadowMaps* Shadows = nullptr;
   const RadianceState* Radiance = nullptr;
+  /// The owner's last frame: its renderer and when it was presented.
+  PresentedFrame Presented;
 };
 
 }

@@ -6,6 +6,7 @@
 #include "ImageStages.h"
 #include "PropKeys.h"
 #include "Ranks.h"
+#include "SourceLink.h"
 #include "StageIds.h"
 #include "VolumeReadback.h"
 #include "VoxelMemory.h"
@@ -45,6 +46,7 @@ struct vtkVoxelGIPass::Internals
   voxelgi::Frame Frame;
   voxelgi::VoxelMemory Memory;
   voxelgi::WindowFollower Follower; // the window whose context holds the resources
+  voxelgi::SourceLink Link;          // whose voxels are shared with whom
 };
 
 vtkVoxelGIPass::vtkVoxelGIPass()
@@ -63,15 +65,14 @@ vtkVoxelGIPass::~vtkVoxelGIPass()
 
 void vtkVoxelGIPass::SetVoxelSource(vtkVoxelGIPass* source)
 {
-  // A source owns its voxels: no chains, hence no cycles of references.
-  if (source && (source == this || source->VoxelSource))
+  voxelgi::SourceLink& link = this->Internal->Link;
+  voxelgi::SourceLink* to = source ? &source->Internal->Link : nullptr;
+  if (const char* refusal = link.Refusal(to, source == this))
   {
-    vtkErrorMacro(<< "SetVoxelSource: "
-                  << (source == this ? "a pass cannot share its own voxels"
-                                     : "that pass shares another pass's voxels itself")
-                  << "; the voxel source is left unchanged.");
+    vtkErrorMacro(<< "SetVoxelSource: " << refusal << "; the voxel source is left unchanged.");
     return;
   }
+  link.Move(this->VoxelSource ? &this->VoxelSource->Internal->Link : nullptr, to);
   vtkSetObjectBodyMacro(VoxelSource, vtkVoxelGIPass, source);
 }
 
@@ -89,10 +90,7 @@ void vtkVoxelGIPass::SetPropEmission(vtkProp* prop, double r, double g, double b
 
 void vtkVoxelGIPass::SetPropDynamic(vtkProp* prop, bool dynamic)
 {
-  if (prop)
-  {
-    voxelgi::SetDynamicKey(prop, dynamic);
-  }
+  voxelgi::SetDynamicKey(prop, dynamic);
 }
 
 bool vtkVoxelGIPass::GetStageRan(int stage) const
@@ -128,9 +126,7 @@ int vtkVoxelGIPass::GetGridResolution() const
 void vtkVoxelGIPass::GetGridOrigin(double origin[3]) const
 {
   const glm::dvec3 corner = this->TracedVoxels().Grid.Origin;
-  origin[0] = corner.x;
-  origin[1] = corner.y;
-  origin[2] = corner.z;
+  std::copy(&corner.x, &corner.x + 3, origin);
 }
 
 double vtkVoxelGIPass::GetGridVoxelSize() const
@@ -167,7 +163,14 @@ unsigned long long vtkVoxelGIPass::GetAllocatedBytes(int resource) const
 unsigned long long vtkVoxelGIPass::GetRequiredVoxelMemoryBytes(bool emission)
 {
   return voxelgi::VoxelMemoryNeed(emission,
-    voxelgi::Snapshot(this, false, this->GetSoftwareProfileActive())).Total();
+    voxelgi::Snapshot(this, false, this->GetSoftwareProfileActive()),
+    this->Internal->Planner.Lights.GetLights())
+    .Total();
+}
+
+bool vtkVoxelGIPass::GetGIActive() const
+{
+  return this->GIActive && this->Internal->Follower.Served();
 }
 
 unsigned long long vtkVoxelGIPass::GetVoxelMemoryBytes() const
@@ -195,6 +198,7 @@ voxelgi::VoxelView vtkVoxelGIPass::ViewVoxels() const
   view.Lights = &in.Planner.Lights;
   view.Shadows = &in.Voxels.Shadows;
   view.Radiance = &in.Planner.History.GetRadiance();
+  view.Presented = in.Planner.LastPresented();
   return view;
 }
 
@@ -265,9 +269,8 @@ voxelgi::FramePlan& vtkVoxelGIPass::PlanFrame(const vtkRenderState* s)
   }
   else
   {
-    const bool emission =
-      frame.Plan.Voxels.Run ? frame.Plan.Voxels.Emission : in.Voxels.Voxelize->HasEmission();
-    frame.Plan.GI = frame.Plan.GI && in.Planner.PlanLights(frame, emission, this->GetMTime());
+    frame.Plan.GI = frame.Plan.GI &&
+      in.Planner.PlanLights(frame, this->Configuration().Emission, this->GetMTime());
   }
   frame.Plan.VoxelView =
     this->DebugView >= DEBUG_VIEW_VOXEL_ALBEDO && this->DebugView <= DEBUG_VIEW_VOXEL_RADIANCE;
@@ -290,6 +293,7 @@ voxelgi::FramePlan& vtkVoxelGIPass::PlanVoxels(vtkRenderer* renderer, const vtkR
   {
     in.Follower.Follow(vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow()));
     frame.Window = in.Follower.Get();
+    frame.RenderStarts = in.Follower.RenderStarts();
     frame.Delegate = this->DelegatePass;
     frame.Processes = &in.Processes;
     frame.Clock = &in.Clock;
@@ -364,9 +368,9 @@ bool vtkVoxelGIPass::Relight()
   }
   in.Planner.Lights.Bind();
   in.Voxels.GridBlock.Bind(frame.Grid);
-  std::string error;
-  const bool ok = in.Voxels.Relight(frame, error);
-  in.Planner.Lit(frame, ok);
+  std::string error, note;
+  const bool ok = in.Voxels.Relight(frame, error, note);
+  in.Planner.Lit(frame, ok, note);
   if (!ok)
   {
     this->Refuse(error);
@@ -378,17 +382,15 @@ bool vtkVoxelGIPass::Trace()
 {
   Internals& in = *this->Internal;
   const voxelgi::Frame& frame = in.Frame;
-  if (frame.Plan.Trace == voxelgi::TraceWork::Present && !frame.Plan.VoxelView)
+  std::string error;
+  // Nothing to trace when only the presentation changed (and no voxel view is shown).
+  if ((frame.Plan.Trace == voxelgi::TraceWork::Present && !frame.Plan.VoxelView) ||
+    in.Images.Run(frame, in.Planner.Lights, in.Voxels.GridBlock, error))
   {
     return true;
   }
-  std::string error;
-  if (!in.Images.Run(frame, in.Planner.Lights, in.Voxels.GridBlock, error))
-  {
-    this->Refuse(error);
-    return false;
-  }
-  return true;
+  this->Refuse(error);
+  return false;
 }
 
 void vtkVoxelGIPass::Present()
@@ -422,7 +424,9 @@ voxelgi::Configuration vtkVoxelGIPass::Configuration()
 {
   const Internals& in = *this->Internal;
   const voxelgi::Frame& frame = in.Frame;
-  const bool emission = frame.Plan.Voxels.Run ? frame.Plan.Voxels.Emission : in.Voxels.Voxelize->HasEmission();
+  // Without a voxelization this frame, the emission of the voxels held.
+  const bool emission =
+    frame.Plan.Voxels.Run ? frame.Plan.Voxels.Emission : in.Voxels.Voxelize->HasEmission();
   return { this->GetMTime(), emission, frame.Width, frame.Height };
 }
 
@@ -449,9 +453,12 @@ bool vtkVoxelGIPass::GetVoxelVolume(int volume, vtkImageData* image)
 void vtkVoxelGIPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   Internals& in = *this->Internal;
-  this->ReleaseStages(w);
-  in.Clock.ReleaseGraphicsResources();
+  in.Follower.InContext(w, [this, w, &in] {
+    this->ReleaseStages(w);
+    in.Clock.ReleaseGraphicsResources();
+  });
   in.Planner.Forget();
+  this->GIActive = false; // what passes sharing the voxels ask
   in.Gate.ReleaseGraphicsResources();
   if (this->DelegatePass)
   {
@@ -479,16 +486,9 @@ void vtkVoxelGIPass::ReleaseStages(vtkWindow* w)
 void vtkVoxelGIPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "DelegatePass: ";
-  if (this->DelegatePass)
-  {
-    this->DelegatePass->PrintSelf(os, indent.GetNextIndent());
-  }
-  else
-  {
-    os << "(none)\n";
-  }
-  os << indent << "VoxelSource: " << static_cast<void*>(this->VoxelSource) << "\n";
+  os << indent << "DelegatePass: " << static_cast<void*>(this->DelegatePass) << "\n";
+  os << indent << "VoxelSource: " << static_cast<void*>(this->VoxelSource) << " (shared by "
+     << this->Internal->Link.GetSharers() << " passes)\n";
   os << indent << "GIActive: " << this->GIActive << "\n";
   os << indent << "SoftwareProfileActive: " << this->GetSoftwareProfileActive() << "\n";
   const voxelgi::VoxelGrid grid = this->TracedVoxels().Grid;

@@ -102,8 +102,10 @@ public:
    * that light the voxels are the source's; this renderer's lights shade VTK's image and aim
    * the shadow cones. The source's renderer should render first (added to the window first,
    * or on a lower layer); otherwise this pass traces the voxels of the source's last frame.
-   * The source must own its voxels (no chains) and render into the same window; otherwise
-   * this pass says so once and renders VTK's image. nullptr (default): own voxels.
+   * The source must own its voxels (no chains: a pass others share cannot share another's)
+   * and render into the same window, in each of its renders; otherwise this pass says so
+   * once and renders VTK's image (as it does for a frame where the source has released its
+   * voxels). nullptr (default): own voxels.
    */
   virtual void SetVoxelSource(vtkVoxelGIPass* source);
   vtkGetObjectMacro(VoxelSource, vtkVoxelGIPass);
@@ -188,11 +190,12 @@ public:
   bool GetTraceReused() const;
 
   /**
-   * True when the last frame ran the GI stages (false when GI was off, could not run on this
-   * context, or the scene had nothing to voxelize). A rank of a distributed render whose
+   * True when the window's last render ran this pass's GI stages (false when GI was off, could
+   * not run on this context, the scene had nothing to voxelize, or the pass did not render in
+   * it: its renderer not drawn or the pass removed). A rank of a distributed render whose
    * Render() the compositor skipped reports its part in the ranks' voxels (RenderRanks).
    */
-  vtkGetMacro(GIActive, bool);
+  bool GetGIActive() const;
 
   /**
    * True when the frames run in the software profile (SoftwareProfile ON, or AUTO on a
@@ -214,11 +217,15 @@ public:
   unsigned long long GetVoxelMemoryBytes() const;
 
   /**
-   * GPU memory the voxel volumes need with the current settings, in bytes: what
+   * GPU memory the voxel volumes and the shadow maps need with the current settings, in
+   * bytes (the maps of the last frame's lights, at ShadowMapResolution): what
    * GetVoxelMemoryBytes() reports once a scene with (or without) emissive props has been
-   * rendered, shadow maps not included. Before allocating, the pass compares it with the
-   * memory the GL reports free; a configuration that does not fit is refused with one error
-   * and renders VTK's image until a setting changes or Invalidate() is called.
+   * rendered with those lights. Before allocating the volumes, the pass compares what they
+   * need with the memory the GL reports free; volumes that do not fit are refused with one
+   * error and VTK's image is rendered until a setting changes or Invalidate() is called.
+   * Shadow maps that do not fit degrade instead: rendered smaller, or (where not even 128
+   * texels fit) replaced by shadows raymarched through the voxels, with one warning that
+   * gives the figures.
    */
   unsigned long long GetRequiredVoxelMemoryBytes(bool emission);
 

@@ -174,8 +174,7 @@ int TestGISoak(int, char*[])
     active += gi->GetGIActive() ? 1 : 0;
     VOXELGI_CHECK(!gi->GetGIActive() || voxelgi_test::Bounded(gi),
       "frame " << frame << ": unbounded or non-finite values");
-    const unsigned long long held = gi->GetVoxelMemoryBytes() -
-      gi->GetAllocatedBytes(vtkVoxelGIPass::RESOURCE_SHADOW_MAPS);
+    const unsigned long long held = gi->GetVoxelMemoryBytes();
     // (with GI off the volumes of the last GI frame are kept for the next)
     VOXELGI_CHECK(!gi->GetGIActive() || held <= gi->GetRequiredVoxelMemoryBytes(true),
       "frame " << frame << ": holds " << held << " bytes, its settings need at most "

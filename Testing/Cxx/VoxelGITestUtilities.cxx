@@ -252,6 +252,30 @@ std::vector<vtkActor*> AddClosedBox(vtkRenderer* renderer, double size, double r
   return walls;
 }
 
+vtkSmartPointer<vtkFloatArray> Composite(vtkVoxelGIPass* gi)
+{
+  auto image = vtkSmartPointer<vtkFloatArray>::New();
+  return gi->GetFloatImage(vtkVoxelGIPass::IMAGE_COMPOSITE, image) ? image : nullptr;
+}
+
+double MaxDifference(vtkDataArray* a, vtkDataArray* b)
+{
+  if (!a || !b || a->GetNumberOfValues() != b->GetNumberOfValues() ||
+    a->GetNumberOfComponents() != b->GetNumberOfComponents())
+  {
+    return 1e30;
+  }
+  double d = 0.0;
+  for (vtkIdType t = 0; t < a->GetNumberOfTuples(); ++t)
+  {
+    for (int c = 0; c < a->GetNumberOfComponents(); ++c)
+    {
+      d = std::max(d, std::abs(a->GetComponent(t, c) - b->GetComponent(t, c)));
+    }
+  }
+  return d;
+}
+
 std::string StagesRan(vtkVoxelGIPass* gi)
 {
   std::string ran;

@@ -17,6 +17,7 @@
 
 class vtkActor;
 class vtkAlgorithm;
+class vtkDataArray;
 class vtkFloatArray;
 
 namespace voxelgi_test
@@ -42,6 +43,13 @@ bool AllFinite(vtkVoxelGIPass* gi);
 
 /// AllFinite, and the composite within [0, 65504] (prints what is not).
 bool Bounded(vtkVoxelGIPass* gi);
+
+/// The composite of the pass's last frame (null when it has none).
+vtkSmartPointer<vtkFloatArray> Composite(vtkVoxelGIPass* gi);
+
+/// Largest difference between two images of the same size (1e30 if either is missing or
+/// their sizes differ).
+double MaxDifference(vtkDataArray* a, vtkDataArray* b);
 
 /// The stages `gi` ran in its last frame, by name, comma-separated.
 std::string StagesRan(vtkVoxelGIPass* gi);

@@ -6,6 +6,7 @@
 #include <EGL/eglext.h>
 
 #include <algorithm>
+#include <vector>
 
 vtkStandardNewMacro(vtkVoxelGIEGLRenderWindow);
 
@@ -17,6 +18,14 @@ struct vtkVoxelGIEGLRenderWindow::EGLState
   EGLSurface Surface = EGL_NO_SURFACE;
   int SurfaceSize[2] = { 0, 0 };
   bool Failed = false;
+  bool GlewReported = false;
+  struct Current
+  {
+    EGLDisplay Display;
+    EGLSurface Draw, Read;
+    EGLContext Context;
+  };
+  std::vector<Current> Pushed;
 
   EGLDisplay OpenDisplay(int device)
   {
@@ -130,10 +139,18 @@ bool vtkVoxelGIEGLRenderWindow::CreateContext()
 
 void vtkVoxelGIEGLRenderWindow::Render()
 {
-  if (this->CreateContext())
+  if (!this->CreateContext())
   {
-    this->Superclass::Render();
+    return;
   }
+  this->MakeCurrent();
+  if (!this->IsCurrent())
+  {
+    vtkErrorMacro(<< "The window's EGL context could not be made current: it is current in "
+                     "another thread; call ReleaseCurrent() there first. Nothing is rendered.");
+    return;
+  }
+  this->Superclass::Render();
 }
 
 void vtkVoxelGIEGLRenderWindow::MakeCurrent()
@@ -148,6 +165,47 @@ void vtkVoxelGIEGLRenderWindow::MakeCurrent()
 bool vtkVoxelGIEGLRenderWindow::IsCurrent()
 {
   return this->EGL->Context != EGL_NO_CONTEXT && eglGetCurrentContext() == this->EGL->Context;
+}
+
+void vtkVoxelGIEGLRenderWindow::ReleaseCurrent()
+{
+  if (this->IsCurrent())
+  {
+    eglMakeCurrent(this->EGL->Display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+  }
+}
+
+void vtkVoxelGIEGLRenderWindow::PushContext()
+{
+  this->EGL->Pushed.push_back({ eglGetCurrentDisplay(), eglGetCurrentSurface(EGL_DRAW),
+    eglGetCurrentSurface(EGL_READ), eglGetCurrentContext() });
+  if (!this->IsCurrent())
+  {
+    this->MakeCurrent();
+  }
+}
+
+void vtkVoxelGIEGLRenderWindow::PopContext()
+{
+  EGLState& egl = *this->EGL;
+  if (egl.Pushed.empty())
+  {
+    return;
+  }
+  const EGLState::Current before = egl.Pushed.back();
+  egl.Pushed.pop_back();
+  if (before.Context == eglGetCurrentContext())
+  {
+    return;
+  }
+  if (before.Context == EGL_NO_CONTEXT)
+  {
+    this->ReleaseCurrent();
+  }
+  else
+  {
+    eglMakeCurrent(before.Display, before.Draw, before.Read, before.Context);
+  }
 }
 
 int vtkVoxelGIEGLRenderWindow::SupportsOpenGL()
@@ -178,6 +236,23 @@ void vtkVoxelGIEGLRenderWindow::Finalize()
   {
     this->MakeCurrent();
     this->ReleaseGraphicsResources(this);
+  }
+}
+
+void vtkVoxelGIEGLRenderWindow::OpenGLInitContext()
+{
+  // VTK retries (and reports) a failed glewInit at every render; after the first report
+  // the retries are quiet.
+  const int display = vtkObject::GetGlobalWarningDisplay();
+  vtkObject::SetGlobalWarningDisplay(this->EGL->GlewReported ? 0 : display);
+  this->Superclass::OpenGLInitContext();
+  vtkObject::SetGlobalWarningDisplay(display);
+  if (!this->Initialized && !this->EGL->GlewReported)
+  {
+    this->EGL->GlewReported = true;
+    vtkWarningMacro(<< "GLEW, built for GLX, reports an error under EGL although OpenGL works; "
+                       "preload libVoxelGIGlewEGLShim.so (LD_PRELOAD) to initialize it. Not "
+                       "said again for this window.");
   }
 }
 

@@ -14,8 +14,13 @@
  * window->Render();
  * @endcode
  *
+ * An EGL context is current in one thread at a time: a window rendered in a worker thread
+ * must be released there (ReleaseCurrent()) before another thread renders it; until then
+ * Render() reports an error and draws nothing.
+ *
  * Note: Debian's GLEW 2.2 is built for GLX; under EGL its glewInit() reports "no GLX display"
- * after loading every OpenGL entry point, and VTK logs that once per frame.
+ * after loading every OpenGL entry point, and VTK would log that at every render. This window
+ * lets it be said once, with the remedy (preloading libVoxelGIGlewEGLShim.so).
  *
  * @sa vtkGenericOpenGLRenderWindow vtkVoxelGIPass
  */
@@ -54,10 +59,20 @@ public:
 
   void MakeCurrent() override;
   bool IsCurrent() override;
+  void ReleaseCurrent() override;
+  ///@{
+  /**
+   * Make this window's context current and restore the one current before: GL objects of
+   * one window are freed while another renders.
+   */
+  void PushContext() override;
+  void PopContext() override;
+  ///@}
   int SupportsOpenGL() override;
   vtkTypeBool IsDirect() override;
   void SetSize(int width, int height) override;
   void Finalize() override;
+  void OpenGLInitContext() override;
 
 protected:
   vtkVoxelGIEGLRenderWindow();
