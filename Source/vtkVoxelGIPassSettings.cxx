@@ -6,7 +6,10 @@
 #include "VoxelizePass.h"
 #include "vtkVoxelGISettings.h"
 
+#include <cmath>
 #include <sstream>
+#include <string>
+#include <vector>
 
 void vtkVoxelGIPassSettings::SetVoxelResolution(int resolution)
 {
@@ -39,6 +42,28 @@ void vtkVoxelGIPassSettings::PrintSelf(ostream& os, vtkIndent indent)
   for (int i = 0; i < vtkVoxelGISettings::GetNumberOfSettings(); ++i)
   {
     const char* name = vtkVoxelGISettings::GetName(i);
-    os << indent << name << ": " << vtkVoxelGISettings::GetValue(this, name) << "\n";
+    const double value = vtkVoxelGISettings::GetValue(this, name);
+    os << indent << name << ": ";
+    // An enumeration prints its value's name, as its setter's ...To<Name>() says it.
+    const std::string type = vtkVoxelGISettings::GetType(i);
+    if (type == "enum")
+    {
+      std::istringstream values(vtkVoxelGISettings::GetEnumerationValues(i));
+      std::vector<std::string> labels;
+      for (std::string label; std::getline(values, label, '|');)
+      {
+        labels.push_back(label);
+      }
+      const auto k = static_cast<std::size_t>(std::lround(value));
+      os << (k < labels.size() ? labels[k] : "?") << " (" << value << ")\n";
+    }
+    else if (type == "bool")
+    {
+      os << (value != 0.0 ? "On" : "Off") << "\n";
+    }
+    else
+    {
+      os << value << "\n";
+    }
   }
 }

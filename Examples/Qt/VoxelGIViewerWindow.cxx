@@ -8,6 +8,7 @@
 #include "vtkActor.h"
 #include "vtkAlgorithmOutput.h"
 #include "vtkCamera.h"
+#include "vtkCommand.h"
 #include "vtkContourFilter.h"
 #include "vtkElevationFilter.h"
 #include "vtkGenericOpenGLRenderWindow.h"
@@ -23,11 +24,13 @@
 #include "vtkSphereSource.h"
 #include "vtkXMLPolyDataReader.h"
 
+#include <QApplication>
 #include <QComboBox>
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QMenuBar>
 #include <QScrollArea>
+#include <QStatusBar>
 #include <QToolBar>
 
 namespace
@@ -67,8 +70,9 @@ VoxelGIViewerWindow::VoxelGIViewerWindow(QWidget* parent)
   this->View = new QVTKOpenGLNativeWidget(this);
   this->View->setRenderWindow(this->Window);
   this->Window->AddRenderer(this->Renderer);
-  this->Pass->SetVoxelResolution(64);
   this->Renderer->SetPass(this->Pass);
+  this->Window->AddObserver(vtkCommand::StartEvent, this, &VoxelGIViewerWindow::renderStarted);
+  this->Window->AddObserver(vtkCommand::EndEvent, this, &VoxelGIViewerWindow::renderEnded);
   this->setCentralWidget(this->View);
 
   this->Settings = new vtkVoxelGISettingsWidget(this);
@@ -104,6 +108,31 @@ VoxelGIViewerWindow::VoxelGIViewerWindow(QWidget* parent)
 }
 
 VoxelGIViewerWindow::~VoxelGIViewerWindow() = default;
+
+void VoxelGIViewerWindow::renderStarted()
+{
+  this->RenderClock.start();
+  // A slow frame (a software renderer, a voxel rebuild at a high resolution) blocks the event
+  // loop: say so before it starts. Fast frames (interaction on a GPU) show nothing.
+  if (this->LastFrameSeconds >= this->BusyAfter)
+  {
+    QApplication::setOverrideCursor(Qt::WaitCursor);
+    this->Busy = true;
+    this->statusBar()->showMessage(tr("Rendering..."));
+    this->statusBar()->repaint();
+  }
+}
+
+void VoxelGIViewerWindow::renderEnded()
+{
+  this->LastFrameSeconds = 1e-3 * static_cast<double>(this->RenderClock.elapsed());
+  if (this->Busy)
+  {
+    QApplication::restoreOverrideCursor();
+    this->Busy = false;
+  }
+  this->statusBar()->showMessage(tr("Last frame: %1 s").arg(this->LastFrameSeconds, 0, 'f', 2));
+}
 
 void VoxelGIViewerWindow::resetRenderer()
 {

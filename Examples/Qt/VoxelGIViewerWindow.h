@@ -5,6 +5,7 @@
 
 #include "vtkNew.h"
 
+#include <QElapsedTimer>
 #include <QMainWindow>
 
 class QComboBox;
@@ -25,6 +26,9 @@ public:
   vtkGenericOpenGLRenderWindow* renderWindow() const { return this->Window; }
   vtkVoxelGIPass* pass() const { return this->Pass; }
   vtkVoxelGISettingsWidget* settings() const { return this->Settings; }
+  /// A render after a frame slower than this shows the busy state (default 0.2 s; 0: every
+  /// render).
+  void setBusyAfter(double seconds) { this->BusyAfter = seconds; }
 
   /// Built-in scenes: 0 Cornell box, 1 wavelet isosurface, 2 glyph field.
   void showScene(int scene);
@@ -33,6 +37,9 @@ public:
 
 private:
   void resetRenderer();
+  /// The busy state: a wait cursor and a status message while a slow frame renders.
+  void renderStarted();
+  void renderEnded();
 
   QVTKOpenGLNativeWidget* View = nullptr;
   vtkVoxelGISettingsWidget* Settings = nullptr;
@@ -40,6 +47,10 @@ private:
   vtkNew<vtkGenericOpenGLRenderWindow> Window;
   vtkNew<vtkRenderer> Renderer;
   vtkNew<vtkVoxelGIPass> Pass;
+  QElapsedTimer RenderClock;
+  double LastFrameSeconds = 1.0; // the first frame compiles shaders and voxelizes: slow
+  double BusyAfter = 0.2;
+  bool Busy = false;
 };
 
 #endif

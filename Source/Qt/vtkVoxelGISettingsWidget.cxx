@@ -24,6 +24,68 @@ namespace
 const char* const GroupOrder[] = { "General", "Voxelization", "Lighting", "Cones", "Debug view",
   "Performance" };
 
+/// Settings that take effect only while another setting has a value: their controls are
+/// disabled otherwise, so that nobody edits a value the pass ignores.
+struct Dependency
+{
+  const char* Setting;
+  const char* On;
+  int Value;
+};
+const Dependency Dependencies[] = {
+  { "UpdateInterval", "UpdatePolicy", vtkVoxelGIPass::UPDATE_EVERY_N_FRAMES },
+  { "ShadowMapResolution", "LightOcclusion", vtkVoxelGIPass::LIGHT_OCCLUSION_SHADOW_MAPS },
+  { "SpecularIntensity", "SpecularCone", 1 },
+  { "ShadowConeAperture", "ConeShadows", 1 },
+};
+
+/// "VoxelResolution" -> "Voxel resolution": a word starts at each capital that follows a
+/// small letter or begins a capitalised word ("GBufferSamples" -> "G buffer samples").
+QString Label(const QString& name)
+{
+  QString label = name.left(1);
+  for (int i = 1; i < name.size(); ++i)
+  {
+    const bool beforeSmall = i + 1 < name.size() && name[i + 1].isLower();
+    if (name[i].isUpper() && (name[i - 1].isLower() || beforeSmall))
+    {
+      label += ' ';
+    }
+    label += name[i].isUpper() && beforeSmall ? name[i].toLower() : name[i];
+  }
+  return label;
+}
+
+/// The setting's documentation, then its range (or values) and default.
+QString ToolTip(int i)
+{
+  const QString type = QString::fromUtf8(vtkVoxelGISettings::GetType(i));
+  const double lo = vtkVoxelGISettings::GetMinimum(i), hi = vtkVoxelGISettings::GetMaximum(i);
+  const double d = vtkVoxelGISettings::GetDefault(i);
+  QString range, byDefault;
+  if (type == "bool")
+  {
+    byDefault = d != 0.0 ? QObject::tr("on") : QObject::tr("off");
+  }
+  else if (type == "enum")
+  {
+    const QStringList values =
+      QString::fromUtf8(vtkVoxelGISettings::GetEnumerationValues(i)).split('|', Qt::SkipEmptyParts);
+    range = QObject::tr("Values: %1.").arg(values.join(", "));
+    byDefault = values.value(static_cast<int>(d));
+  }
+  else
+  {
+    range = QObject::tr("Range: %1 to %2%3.")
+              .arg(lo)
+              .arg(hi)
+              .arg(vtkVoxelGISettings::GetPowerOfTwo(i) ? QObject::tr(", powers of two") : QString());
+    byDefault = QString::number(d);
+  }
+  return QString::fromUtf8(vtkVoxelGISettings::GetDocumentation(i)) + "\n\n" + range +
+    (range.isEmpty() ? "" : " ") + QObject::tr("Default: %1.").arg(byDefault);
+}
+
 /// Spin box of a setting that takes only powers of two: steps double or halve, and a typed
 /// value is rounded as the pass rounds it, so the box never shows a value the pass would not use.
 class PowerOfTwoSpinBox : public QSpinBox
@@ -80,6 +142,12 @@ vtkVoxelGISettingsWidget::vtkVoxelGISettingsWidget(QWidget* parent)
   : QWidget(parent)
 {
   auto* layout = new QVBoxLayout(this);
+  // The read-out first: it is what changes at each render, visible without scrolling.
+  this->Timings = new QLabel(this);
+  this->Timings->setObjectName("Timings");
+  this->Timings->setTextFormat(Qt::PlainText);
+  this->Timings->setWordWrap(true); // the panel keeps the width its controls need
+  layout->addWidget(this->Timings);
   QMap<QString, QFormLayout*> groups;
   for (const char* group : GroupOrder)
   {
@@ -131,9 +199,12 @@ vtkVoxelGISettingsWidget::vtkVoxelGISettingsWidget(QWidget* parent)
       control = spin;
     }
     control->setObjectName(name);
-    control->setToolTip(QString::fromUtf8(vtkVoxelGISettings::GetDocumentation(i)));
+    control->setToolTip(ToolTip(i));
+    auto* label = new QLabel(Label(name), this);
+    label->setToolTip(control->toolTip());
+    label->setBuddy(control);
     QFormLayout* form = groups.value(QString::fromUtf8(vtkVoxelGISettings::GetGroup(i)), nullptr);
-    (form ? form : groups["General"])->addRow(name, control);
+    (form ? form : groups["General"])->addRow(label, control);
     this->Names << name;
     this->Controls[name] = control;
   }
@@ -141,10 +212,6 @@ vtkVoxelGISettingsWidget::vtkVoxelGISettingsWidget(QWidget* parent)
   auto* reset = new QPushButton(tr("Reset to defaults"), this);
   connect(reset, &QPushButton::clicked, this, &vtkVoxelGISettingsWidget::resetToDefaults);
   layout->addWidget(reset);
-  this->Timings = new QLabel(this);
-  this->Timings->setObjectName("Timings");
-  this->Timings->setTextFormat(Qt::PlainText);
-  layout->addWidget(this->Timings);
   layout->addStretch();
 
   this->PassObserver = vtkCallbackCommand::New();
@@ -248,6 +315,13 @@ void vtkVoxelGISettingsWidget::updateControls()
       dspin->setValue(value);
     }
   }
+  for (const Dependency& d : Dependencies)
+  {
+    if (QWidget* control = this->Controls.value(d.Setting, nullptr))
+    {
+      control->setEnabled(std::lround(vtkVoxelGISettings::GetValue(this->Pass, d.On)) == d.Value);
+    }
+  }
   this->Updating = false;
 }
 
@@ -275,15 +349,28 @@ void vtkVoxelGISettingsWidget::updateTimings()
   {
     return;
   }
-  QString text = this->Pass->GetGIActive() ? tr("Last frame:\n") : tr("Last frame: GI not active\n");
+  if (!this->Pass->GetGIActive())
+  {
+    this->Timings->setText(tr("Last frame: GI not active"));
+    return;
+  }
+  // Without timer queries the stages are listed (ran or not) but not timed.
+  const bool timed = this->Pass->GetTimeStages() != 0;
+  QString text = timed ? tr("Last frame:\n") : tr("Last frame (tick \"Time stages\" for times):\n");
+  double total = 0.0;
   for (int stage = 0; stage < vtkVoxelGIPass::NUMBER_OF_STAGES; ++stage)
   {
     if (this->Pass->GetStageRan(stage))
     {
-      text += QString("  %1  %2 ms\n")
-                .arg(QString::fromUtf8(vtkVoxelGIPass::GetStageName(stage)), -16)
-                .arg(this->Pass->GetStageTime(stage), 0, 'f', 2);
+      const QString name = QString::fromUtf8(vtkVoxelGIPass::GetStageName(stage));
+      total += this->Pass->GetStageTime(stage);
+      text += timed ? QString("  %1  %2 ms\n").arg(name, -16).arg(this->Pass->GetStageTime(stage), 0, 'f', 2)
+                    : QString("  %1\n").arg(name);
     }
   }
-  this->Timings->setText(text);
+  if (timed)
+  {
+    text += QString("  %1  %2 ms").arg(tr("Total"), -16).arg(total, 0, 'f', 2);
+  }
+  this->Timings->setText(text.trimmed());
 }

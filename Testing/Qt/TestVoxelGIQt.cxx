@@ -1,7 +1,9 @@
 // QtTest for the settings panel and the example viewer (under Xvfb, xcb platform):
 // the panel lists exactly the settings table; its controls set the pass; a power-of-two
-// setting's control offers only powers of two; changes of the pass update the controls;
-// reset restores the defaults; and the viewer's render area matches its baseline image
+// setting's control offers only powers of two; labels and tooltips say range and default;
+// controls of settings the pass ignores are disabled; changes of the pass update the
+// controls; reset restores the defaults; the viewer starts at the defaults, shows a busy
+// state during a slow frame and a timing read-out; and its render area matches its baseline image
 // (VOXELGI_BASELINE, through vtkTesting, rendered image left in VOXELGI_TEMP).
 #include "VoxelGIViewerWindow.h"
 #include "vtkVoxelGIPass.h"
@@ -9,6 +11,8 @@
 #include "vtkVoxelGISettingsWidget.h"
 
 #include "QVTKOpenGLNativeWidget.h"
+#include "vtkCallbackCommand.h"
+#include "vtkCommand.h"
 #include "vtkGenericOpenGLRenderWindow.h"
 #include "vtkNew.h"
 #include "vtkTesting.h"
@@ -18,8 +22,11 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QLabel>
 #include <QSignalSpy>
 #include <QSpinBox>
+#include <QStatusBar>
 #include <QSurfaceFormat>
 #include <QtTest>
 
@@ -44,6 +51,41 @@ private Q_SLOTS:
     {
       QVERIFY2(!panel.control(name)->toolTip().isEmpty(), qPrintable(name + " has no tooltip"));
     }
+  }
+
+  void labelsAndTooltipsSayRangeAndDefault()
+  {
+    vtkVoxelGISettingsWidget panel;
+    QWidget* resolution = panel.control("VoxelResolution");
+    auto* form = qobject_cast<QFormLayout*>(resolution->parentWidget()->layout());
+    QVERIFY(form != nullptr);
+    auto* label = qobject_cast<QLabel*>(form->labelForField(resolution));
+    QVERIFY(label != nullptr);
+    QCOMPARE(label->text(), QString("Voxel resolution"));
+    QCOMPARE(label->toolTip(), resolution->toolTip());
+    QVERIFY2(resolution->toolTip().endsWith("Range: 16 to 512, powers of two. Default: 128."),
+      qPrintable(resolution->toolTip()));
+    QVERIFY(panel.control("UpdatePolicy")
+              ->toolTip()
+              .endsWith("Values: OnChange, EveryFrame, EveryNFrames, OnDemand. Default: OnChange."));
+    QVERIFY(panel.control("Enabled")->toolTip().endsWith("Default: on."));
+    auto* hardware = qobject_cast<QLabel*>(form->labelForField(panel.control("HardwareConservativeRaster")));
+    QCOMPARE(hardware->text(), QString("Hardware conservative raster"));
+  }
+
+  void settingsThePassIgnoresAreDisabled()
+  {
+    vtkNew<vtkVoxelGIPass> pass;
+    vtkVoxelGISettingsWidget panel;
+    panel.setPass(pass);
+    QVERIFY(!panel.control("UpdateInterval")->isEnabled()); // OnChange by default
+    pass->SetUpdatePolicy(vtkVoxelGIPass::UPDATE_EVERY_N_FRAMES);
+    QVERIFY(panel.control("UpdateInterval")->isEnabled());
+    QVERIFY(panel.control("ShadowMapResolution")->isEnabled());
+    pass->SetLightOcclusion(vtkVoxelGIPass::LIGHT_OCCLUSION_VOXEL_SHADOWS);
+    QVERIFY(!panel.control("ShadowMapResolution")->isEnabled());
+    pass->SetConeShadows(0);
+    QVERIFY(!panel.control("ShadowConeAperture")->isEnabled());
   }
 
   void controlsSetThePass()
@@ -154,9 +196,32 @@ private Q_SLOTS:
     viewer.resize(900, 600);
     viewer.show();
     QVERIFY(QTest::qWaitForWindowExposed(&viewer));
-    viewer.renderWindow()->Render();
+    // A frame after a slow one shows a wait cursor and a message while it renders (read by an
+    // observer that runs inside the render), none after; every frame counts as slow here.
+    viewer.setBusyAfter(0.0);
+    bool busy = false;
+    auto* window = viewer.renderWindow();
+    vtkNew<vtkCallbackCommand> probe;
+    probe->SetClientData(&busy);
+    probe->SetCallback([](vtkObject*, unsigned long, void* flag, void*) {
+      *static_cast<bool*>(flag) = QApplication::overrideCursor() != nullptr;
+    });
+    const unsigned long tag = window->AddObserver(vtkCommand::StartEvent, probe, -1.0f); // after the viewer's
+    QCOMPARE(viewer.pass()->GetVoxelResolution(), 128); // the defaults: Reset changes nothing
+    window->Render();
+    window->RemoveObserver(tag);
+    QVERIFY2(busy, "no busy state during a slow frame");
+    QVERIFY(QApplication::overrideCursor() == nullptr);
+    QVERIFY(viewer.statusBar()->currentMessage().startsWith("Last frame: "));
     QVERIFY2(viewer.pass()->GetGIActive(), "GI did not run in the viewer");
-    QVERIFY(viewer.settings()->findChild<QWidget*>("Timings") != nullptr);
+    auto* timings = viewer.settings()->findChild<QLabel*>("Timings");
+    QVERIFY(timings != nullptr);
+    QVERIFY2(timings->text().contains("tick \"Time stages\""), qPrintable(timings->text()));
+    viewer.pass()->TimeStagesOn();
+    window->Render();
+    QVERIFY2(timings->text().contains("Total"), qPrintable(timings->text()));
+    viewer.pass()->TimeStagesOff();
+    window->Render();
 
     vtkNew<vtkWindowToImageFilter> grab;
     grab->SetInput(viewer.renderWindow());

@@ -10,6 +10,7 @@
 #include "vtkCamera.h"
 #include "vtkGlyph3DMapper.h"
 #include "vtkNew.h"
+#include "vtkOutlineSource.h"
 #include "vtkOpenGLPolyDataMapper.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -266,6 +267,22 @@ TEST_F(ScanFixture, TranslucentAndWireframeAreLeftOutWithNoticesThatCount)
   ASSERT_TRUE(this->Next());
   ASSERT_EQ(this->Messages.Warnings.size(), 1u);
   EXPECT_EQ(this->Messages.Warnings[0], "Rendered by VTK without voxel GI: 4 x vtkOpenGLActor (translucent).");
+}
+
+TEST_F(ScanFixture, OutlineInWireframeNeedsNoNotice)
+{
+  // ParaView's outline representation: a box of lines in a wireframe actor.
+  AddSphere(this->Renderer, 0.0);
+  vtkNew<vtkOutlineSource> outline;
+  vtkNew<vtkOpenGLPolyDataMapper> mapper;
+  mapper->SetInputConnection(outline->GetOutputPort());
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetRepresentationToWireframe();
+  this->Renderer->AddActor(actor);
+  ASSERT_TRUE(this->Next());
+  EXPECT_EQ(this->Scan.GetRecords().size(), 2u); // kept as plain lines are: nothing to rasterize
+  EXPECT_TRUE(this->Messages.Warnings.empty());
 }
 
 TEST_F(ScanFixture, GlyphMappersAreVoxelized)
