@@ -47,24 +47,28 @@ foreach (i RANGE ${last})
     set(element "IntVectorProperty")
     set(domain "<IntRangeDomain name=\"range\" min=\"${min}\" max=\"${max}\" />")
   endif ()
+  # Settings other than the switch itself hide while GI is off. The hint sits in the
+  # property's own definition: ParaView reads hints there, not on the exposing view, whose
+  # name for "Enabled" (EnableVoxelGI) the decorator names.
+  set(hints "")
+  if (NOT name STREQUAL "Enabled")
+    set(hints "
+        <Hints>
+          <PropertyWidgetDecorator type=\"GenericDecorator\" mode=\"visibility\" property=\"EnableVoxelGI\" value=\"1\" />
+        </Hints>")
+  endif ()
   # the setting, and an information-only twin that reads the pass back
   string(APPEND properties "      <${element} name=\"${name}\" command=\"Set${name}\" number_of_elements=\"1\" default_values=\"${default}\"${visibility}>
         ${domain}
-        <Documentation>${doc}</Documentation>
+        <Documentation>${doc}</Documentation>${hints}
       </${element}>
       <${element} name=\"${name}Info\" command=\"Get${name}\" information_only=\"1\" />
 ")
-  # On the view, "Enabled" reads "EnableVoxelGI"; other settings keep their names. Settings
-  # other than the switch itself are hidden while GI is off.
+  # On the view, "Enabled" reads "EnableVoxelGI"; other settings keep their names.
   if (name STREQUAL "Enabled")
     set(exposed "          <Property name=\"Enabled\" exposed_name=\"EnableVoxelGI\" />\n")
   else ()
-    set(exposed "          <Property name=\"${name}\">
-            <Hints>
-              <PropertyWidgetDecorator type=\"GenericDecorator\" mode=\"visibility\" property=\"EnableVoxelGI\" value=\"1\" />
-            </Hints>
-          </Property>
-")
+    set(exposed "          <Property name=\"${name}\" />\n")
   endif ()
   string(APPEND exposed_${group} "${exposed}")
   string(APPEND exposed_information "          <Property name=\"${name}Info\" />\n")

@@ -64,12 +64,13 @@ bool PointsAndLinesOnly(vtkDataObject* data)
 }
 
 /// Why an actor drawing `data` with `property` shows no area to voxelize (null: it does,
-/// or it draws plain points and lines, which take no light worth a notice): points and
+/// or it draws plain points and lines, also as a wireframe, which take no light worth a notice): points and
 /// wireframes, and points and lines drawn as imposter spheres and tubes (no triangles).
 const char* NoAreaReason(vtkProperty* property, vtkDataObject* data)
 {
   const int representation = property->GetRepresentation();
-  if (representation == VTK_SURFACE && !PointsAndLinesOnly(data))
+  const bool linesOnly = PointsAndLinesOnly(data);
+  if (representation == VTK_SURFACE && !linesOnly)
   {
     return nullptr;
   }
@@ -86,7 +87,8 @@ const char* NoAreaReason(vtkProperty* property, vtkDataObject* data)
   {
     return "points drawn as spheres: imposters, no triangles";
   }
-  return representation == VTK_WIREFRAME ? "wireframe representation" : nullptr;
+  // A wireframe of lines draws them as they are (ParaView's outline): nothing is lost.
+  return representation == VTK_WIREFRAME && !linesOnly ? "wireframe representation" : nullptr;
 }
 
 /// Why a visible prop with bounds is not voxelized (empty: it is): its class, and the reason.

@@ -10,8 +10,9 @@ import json
 import os
 import sys
 
-from paraview.simple import (Contour, CreateView, Delete, GetDisplayProperties, LoadPlugin, Plane,
-                             Render, SaveScreenshot, Show, Wavelet)
+from paraview.vtk import vtkOutputWindow, vtkStringOutputWindow
+from paraview.simple import (Contour, CreateView, Delete, GetDisplayProperties, Hide, LoadPlugin,
+                             Plane, Render, SaveScreenshot, Show, Wavelet)
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Python"))
 from strict_image import mismatch  # noqa: E402
@@ -55,7 +56,23 @@ problem = mismatch(baseline, rendered, output_dir)
 if problem:
     failures.append(problem)
 
-# every setting of the table is a view property that reaches the pass
+# ParaView's default representation of image data, an outline (lines in a wireframe actor),
+# is drawn as VTK draws it without a warning (a warning opens ParaView's message window).
+previous = vtkOutputWindow.GetInstance()
+previous.Register(None)
+captured = vtkStringOutputWindow()
+vtkOutputWindow.SetInstance(captured)
+Show(wavelet, view)
+Render(view)
+vtkOutputWindow.SetInstance(previous)
+if GetDisplayProperties(wavelet, view).Representation != "Outline":
+    failures.append("the Wavelet is not shown as an outline")
+if "voxel GI" in captured.GetOutput():
+    failures.append("showing an outline said: " + captured.GetOutput())
+Hide(wavelet, view)
+
+# every setting of the table is a view property that reaches the pass, and hides in the
+# panel while GI is off (a decorator on the view's EnableVoxelGI)
 with open(table_path) as f:
     table = json.load(f)["settings"]
 for s in table:
@@ -64,6 +81,12 @@ for s in table:
     if prop not in view.ListProperties():
         failures.append("view has no property " + prop)
         continue
+    hints = view.SMProxy.GetProperty(prop).GetHints()
+    decorator = hints.FindNestedElementByName("PropertyWidgetDecorator") if hints else None
+    hides = decorator is not None and decorator.GetAttribute("property") == "EnableVoxelGI" \
+        and decorator.GetAttribute("mode") == "visibility" and decorator.GetAttribute("value") == "1"
+    if hides == (name == "Enabled"):
+        failures.append("%s %s while GI is off" % (prop, "hides" if name == "Enabled" else "shows"))
     if s.get("power_of_two"):
         domain = view.SMProxy.GetProperty(prop).FindDomain("vtkSMEnumerationDomain")
         count = domain.GetNumberOfEntries() if domain else 0
