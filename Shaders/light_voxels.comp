@@ -22,14 +22,15 @@ uniform int keepIndirect;
 
 
 // Transmittance from p toward the light: products of (1 - occupancy) along the ray.
-float voxelShadow(vec3 p, vec3 side, vec3 toLight, float distance)
+// `grazing`: leave the voxel's own surface layer (conservative voxelization makes it up to
+// two voxels thick) also toward grazing lights, whose rays run along it; without, a ray from
+// inside a closed object toward a grazing light meets the object's own faces.
+float voxelShadow(vec3 p, vec3 side, vec3 toLight, float distance, bool grazing)
 {
   float res = float(voxelResolution);
-  // Leave the voxel's own surface layer (conservative voxelization makes it up to two
-  // voxels thick) before testing for occluders, also toward grazing lights.
   vec3 origin = p + side * 1.5;
   float transmittance = 1.0;
-  float start = max(1.0, 1.5 / max(dot(side, toLight), 0.1));
+  float start = grazing ? max(1.0, 1.5 / max(dot(side, toLight), 0.1)) : 1.0;
   for (float t = start; t < min(distance, 2.0 * res) && transmittance > 0.01; t += 1.0)
   {
     vec3 q = origin + toLight * t;
@@ -65,12 +66,15 @@ void main()
   }
   vec4 albedo = texelFetch(voxelAlbedo, v, 0);
   vec4 result = vec4(0.0);
+  float lit = 1.0;
   if (albedo.a > 0.0)
   {
     vec3 n = texelFetch(voxelNormal, v, 0).xyz * 2.0 - 1.0;
     vec3 p = vec3(v) + 0.5;
     vec3 radiance = hasEmission != 0 ? texelFetch(voxelEmission, v, 0).rgb : vec3(0.0);
     bool twoSided = voxelLightInfo.y != 0;
+    // direct light reaching the winding's front (x) and back (y), and the back's unoccluded (z)
+    vec3 arriving = vec3(0.0);
     for (int l = 0; l < voxelLightInfo.x; ++l)
     {
       vec3 toLight;
@@ -81,17 +85,32 @@ void main()
       {
         continue;
       }
-      vec3 side = dot(n, n) < 0.25 ? toLight : (dot(n, toLight) >= 0.0 ? n : -n);
-      float visibility = voxelShadows != 0 ? voxelShadow(p, side, toLight, distance) : 1.0;
+      bool back = dot(n, n) >= 0.25 && dot(n, toLight) < 0.0;
+      vec3 side = dot(n, n) < 0.25 ? toLight : (back ? -n : n);
+      float visibility = voxelShadows != 0 ? voxelShadow(p, side, toLight, distance, true) : 1.0;
+      float backVisibility =
+        back && voxelShadows != 0 ? voxelShadow(p, side, toLight, distance, false) : visibility;
 #ifdef VOXELGI_SHADOW_MAPS
       if (shadowMapped(l))
       {
         // from just off the voxel's lit side
         visibility = shadowMapVisibility(l, p + side + toLight);
+        backVisibility = visibility;
       }
 #endif
+      float light = dot(voxelLights[l].color.rgb, vec3(1.0)) * attenuation * lambert;
       radiance += albedo.rgb * voxelLights[l].color.rgb * (attenuation * lambert * visibility);
+      arriving += vec3(float(!back) * visibility, float(back) * backVisibility, float(back)) * light;
     }
+    // The direct volume's alpha says which side of the winding the bounce gathers over (-1:
+    // the back): VTK lights both sides, and a room seen from inside may be wound outward.
+    // The back counts where the lights reach it unoccluded (not through the faces of a
+    // closed object, tested without the grazing allowance) and it opens onto space (two
+    // voxels free behind it, not the underside of a thin slab lit through the slab).
+    bool open = dot(n, n) >= 0.25 &&
+      texelFetch(voxelAlbedo, ivec3(floor(p - normalize(n))), 0).a == 0.0 &&
+      texelFetch(voxelAlbedo, ivec3(floor(p - 2.0 * normalize(n))), 0).a == 0.0;
+    lit = open && arriving.y > arriving.x && arriving.y > 0.9 * arriving.z ? -1.0 : 1.0;
     result = vec4(min(radiance, vec3(VOXELGI_HALF_MAX)), 1.0);
   }
   vec4 total = result;
@@ -103,6 +122,6 @@ void main()
   imageStore(radianceOut, v, total);
   if (writeDirect != 0)
   {
-    imageStore(directOut, v, result);
+    imageStore(directOut, v, vec4(result.rgb, result.a * lit));
   }
 }

@@ -1,7 +1,8 @@
 // One bounce of indirect diffuse light per occupied voxel (over the occupied bricks): cones
-// over the normal's hemisphere (six axis cones where normals cancel) gather the previous
-// radiance from the mipmaps; radiance = direct + albedo x gathered. Cone weights sum to one,
-// albedo is below one: repeated bounces converge from below (energy bounded).
+// over the hemisphere of the lit side (light_voxels.comp; six axis cones where normals
+// cancel) gather the previous radiance from the mipmaps; radiance = direct + albedo x
+// gathered. Cone weights sum to one, albedo is below one: repeated bounces converge from
+// below (energy bounded).
 layout(local_size_x = VOXELGI_LOCAL_SIZE, local_size_y = VOXELGI_LOCAL_SIZE, local_size_z = VOXELGI_LOCAL_SIZE) in;
 
 #include "lights.glsl"
@@ -48,7 +49,7 @@ void main()
   }
   else
   {
-    n = normalize(n);
+    n = normalize(n) * sign(direct.a); // over the side the lights reach (light_voxels.comp)
     vec3 t, b;
     voxelBasis(n, t, b);
     for (int i = 0; i < coneCount; ++i)
