@@ -155,6 +155,10 @@ int main(int argc, char* argv[])
   }
   csv << "\n";
 
+  // Progress on stderr after each configuration: on a software renderer the study takes tens
+  // of minutes.
+  const auto began = std::chrono::steady_clock::now();
+  std::size_t done = 0;
   for (const Config& config : configs)
   {
     vtkNew<vtkRenderer> renderer;
@@ -282,6 +286,13 @@ int main(int argc, char* argv[])
     std::cout << config.Name << " " << config.Value << ": " << frameMs << " ms (camera only "
               << cameraMs << " ms), RMSE "
               << e.Rmse << ", relMSE " << e.RelMse << ", SSIM " << e.Ssim << ", FLIP " << e.Flip
+              << std::endl;
+    const double elapsed =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+    ++done;
+    std::cerr << "[" << done << "/" << configs.size() << "] " << static_cast<long>(elapsed)
+              << " s so far, about "
+              << static_cast<long>(elapsed / done * (configs.size() - done)) << " s left"
               << std::endl;
   }
   return EXIT_SUCCESS;
