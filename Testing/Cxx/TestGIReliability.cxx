@@ -22,6 +22,7 @@
 #include "vtkNew.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkUnsignedCharArray.h"
 
 #include <sys/resource.h>
 #include <unistd.h>
@@ -412,6 +413,35 @@ const std::map<std::string, std::function<int()>>& Cases()
         box.Renderer->SetPass(nullptr);
         box.Window->Render();
         VOXELGI_CHECK(!box.GI->GetGIActive(), "active in a render after the pass was removed");
+        return EXIT_SUCCESS;
+      } },
+    { "MultiSamplesFollowTheWindow",
+      [] {
+        // Changing only the window's MultiSamples: every frame equals a fresh window's.
+        Box box;
+        box.Window->SetMultiSamples(8);
+        box.Window->Render();
+        std::map<int, vtkSmartPointer<vtkUnsignedCharArray>> images;
+        for (int samples : { 0, 4, 8, 2 })
+        {
+          box.Window->SetMultiSamples(samples);
+          box.Window->Render();
+          Box fresh;
+          fresh.Window->SetMultiSamples(samples);
+          fresh.Window->Render();
+          vtkNew<vtkUnsignedCharArray> shown, expected;
+          box.Window->GetRGBACharPixelData(0, 0, 79, 79, 0, shown);
+          fresh.Window->GetRGBACharPixelData(0, 0, 79, 79, 0, expected);
+          const double d = MaxDifference(shown, expected);
+          std::cout << samples << " samples: GI active " << box.GI->GetGIActive()
+                    << ", largest difference to a fresh window " << d << std::endl;
+          VOXELGI_CHECK(box.GI->GetGIActive() && d <= 2.0, "stale after MultiSamples " << samples);
+          images[samples] = expected.Get();
+        }
+        // A stale image would show: the edges of 0 and 8 samples differ.
+        const double edges = MaxDifference(images[0], images[8]);
+        std::cout << "0 against 8 samples: largest difference " << edges << std::endl;
+        VOXELGI_CHECK(edges > 20.0, "the sample counts give the same image: nothing measured");
         return EXIT_SUCCESS;
       } },
     { "OnePassTwoEGLWindows", OnePassTwoEGLWindows },
