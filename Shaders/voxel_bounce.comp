@@ -1,8 +1,7 @@
 // One bounce of indirect diffuse light per occupied voxel (over the occupied bricks): cones
-// over the hemisphere of the lit side (light_voxels.comp; six axis cones where normals
-// cancel) gather the previous radiance from the mipmaps; radiance = direct + albedo x
-// gathered. Cone weights sum to one, albedo is below one: repeated bounces converge from
-// below (energy bounded).
+// over the lit side's hemisphere (light_voxels.comp; six axis cones where normals cancel)
+// gather the previous radiance from the mipmaps; radiance = direct + albedo x gathered. Cone
+// weights sum to one, albedo is below one: repeated bounces converge from below (energy bounded).
 layout(local_size_x = VOXELGI_LOCAL_SIZE, local_size_y = VOXELGI_LOCAL_SIZE, local_size_z = VOXELGI_LOCAL_SIZE) in;
 
 #include "lights.glsl"
