@@ -61,6 +61,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -693,7 +694,12 @@ int main(int argc, char* argv[])
   {
     json << (i ? ", " : "") << "\"" << o.Settings[i].first << "\": " << o.Settings[i].second;
   }
-  json << "},\n  \"renderer\": \"" << RendererName(window) << "\",\n  \"median_ms\": {\n";
+  // The date: docs/benchmarks/numbers.py shows the newest measurement of each scene.
+  const std::time_t now = std::time(nullptr);
+  char date[32];
+  std::strftime(date, sizeof(date), "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
+  json << "},\n  \"date\": \"" << date << "\",\n  \"renderer\": \"" << RendererName(window)
+       << "\",\n  \"median_ms\": {\n";
   std::cout << std::fixed << std::setprecision(2) << "\nmedian ms on " << RendererName(window)
             << ", " << o.Scene << " (" << actors.size() << " actors, " << triangles
             << " triangles) " << o.Width << "x" << o.Height << ", " << o.Resolution
