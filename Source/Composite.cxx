@@ -3,6 +3,7 @@
 #include "ConeTrace.h"
 #include "Frame.h"
 #include "GBufferPass.h"
+#include "GLHelpers.h"
 #include "GridView.h"
 #include "VoxelGIShaders.h"
 #include "StageIds.h"
@@ -85,10 +86,9 @@ bool Composite::Read(
   {
     return false;
   }
-  renWin->MakeCurrent();
-  if (!renWin->IsCurrent())
+  if (!MakeCurrentForReading(renWin))
   {
-    return false; // another context would answer (a window current in another thread)
+    return false;
   }
   // GL writes the texture as it holds it: size the buffer from that, never from what
   // vtkTextureObject was last asked for (a resize GL refused keeps the old storage).

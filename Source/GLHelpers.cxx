@@ -584,6 +584,12 @@ std::string ImageSizeError(const char* what, int width, int height)
   return std::string();
 }
 
+bool MakeCurrentForReading(vtkOpenGLRenderWindow* window)
+{
+  window->MakeCurrent();
+  return window->IsCurrent();
+}
+
 void StoredSize(vtkTextureObject* texture, int& width, int& height)
 {
   GLint w = 0, h = 0;

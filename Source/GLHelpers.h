@@ -282,6 +282,10 @@ std::string ImageSizeError(const char* what, int width, int height);
 /// the old storage): read-backs must be sized from this one.
 void StoredSize(vtkTextureObject* texture, int& width, int& height);
 
+/// Make `window`'s context current for a read-back; false when it cannot be (the context is
+/// current in another thread: another context would answer).
+bool MakeCurrentForReading(vtkOpenGLRenderWindow* window);
+
 /// The current context's OpenGL version.
 void ContextVersion(int& major, int& minor);
 

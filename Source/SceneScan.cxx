@@ -124,6 +124,18 @@ bool FiniteBounds(vtkActor* actor, double bounds[6])
   }
   return any && std::all_of(bounds, bounds + 6, [](double v) { return std::isfinite(v); });
 }
+
+/// A prop's usable bounds: `bounds` when finite, else those of its finite points (written to
+/// `finite`), else null (nothing finite to place in the grid).
+const double* UsableBounds(vtkProp* prop, const double* bounds, double finite[6])
+{
+  if (std::all_of(bounds, bounds + 6, [](double v) { return std::isfinite(v); }))
+  {
+    return bounds;
+  }
+  auto* actor = vtkActor::SafeDownCast(prop);
+  return actor && actor->GetMapper() && FiniteBounds(actor, finite) ? finite : nullptr;
+}
 }
 
 //------------------------------------------------------------------------------
@@ -205,15 +217,11 @@ bool SceneScan::Collect(vtkRenderer* renderer, bool inRender,
       continue;
     }
     double finite[6];
-    if (!std::all_of(b, b + 6, [](double v) { return std::isfinite(v); }))
+    b = UsableBounds(prop, b, finite);
+    if (!b)
     {
-      auto* withPoints = vtkActor::SafeDownCast(prop);
-      if (!withPoints || !withPoints->GetMapper() || !FiniteBounds(withPoints, finite))
-      {
-        ++leftOut["non-finite bounds (no finite point)"];
-        continue;
-      }
-      b = finite;
+      ++leftOut["non-finite bounds (no finite point)"];
+      continue;
     }
     // An image slice is voxelized through its proxy: a textured quad.
     vtkActor* actor = vtkActor::SafeDownCast(prop);

@@ -1,6 +1,7 @@
 #include "VolumeReadback.h"
 
 #include "Composite.h"
+#include "GLHelpers.h"
 #include "LightVoxels.h"
 #include "VoxelView.h"
 #include "VoxelizePass.h"
@@ -52,10 +53,9 @@ bool ReadVolume(const VoxelView& view, int volume, vtkImageData* image)
   {
     return false;
   }
-  view.Window->MakeCurrent();
-  if (!view.Window->IsCurrent())
+  if (!MakeCurrentForReading(view.Window))
   {
-    return false; // another context would answer (a window current in another thread)
+    return false;
   }
   const vtkIdType n = static_cast<vtkIdType>(res) * res * res;
   vtkSmartPointer<vtkDataArray> array;

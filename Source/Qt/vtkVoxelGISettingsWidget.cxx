@@ -138,6 +138,44 @@ private:
 };
 }
 
+QWidget* vtkVoxelGISettingsWidget::createControl(int i, const QString& name)
+{
+  const QString type = QString::fromUtf8(vtkVoxelGISettings::GetType(i));
+  const double lo = vtkVoxelGISettings::GetMinimum(i);
+  const double hi = vtkVoxelGISettings::GetMaximum(i);
+  if (type == "bool")
+  {
+    auto* check = new QCheckBox(this);
+    connect(check, &QCheckBox::toggled, this, [this, name](bool on) { this->apply(name, on); });
+    return check;
+  }
+  if (type == "enum")
+  {
+    auto* combo = new QComboBox(this);
+    combo->addItems(QString::fromUtf8(vtkVoxelGISettings::GetEnumerationValues(i))
+                      .split('|', Qt::SkipEmptyParts));
+    connect(combo, QOverload<int>::of(&QComboBox::currentIndexChanged), this,
+      [this, name](int index) { this->apply(name, index); });
+    return combo;
+  }
+  if (type == "int")
+  {
+    auto* spin = vtkVoxelGISettings::GetPowerOfTwo(i) ? new PowerOfTwoSpinBox(i, this)
+                                                      : new QSpinBox(this);
+    spin->setRange(static_cast<int>(lo), static_cast<int>(hi));
+    connect(spin, QOverload<int>::of(&QSpinBox::valueChanged), this,
+      [this, name](int value) { this->apply(name, value); });
+    return spin;
+  }
+  auto* spin = new QDoubleSpinBox(this);
+  spin->setDecimals(3);
+  spin->setRange(lo, hi);
+  spin->setSingleStep((hi - lo) / 100.0);
+  connect(spin, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this,
+    [this, name, spin](double value) { this->applyShown(name, value, spin->decimals()); });
+  return spin;
+}
+
 vtkVoxelGISettingsWidget::vtkVoxelGISettingsWidget(QWidget* parent)
   : QWidget(parent)
 {
@@ -160,44 +198,7 @@ vtkVoxelGISettingsWidget::vtkVoxelGISettingsWidget(QWidget* parent)
   for (int i = 0; i < vtkVoxelGISettings::GetNumberOfSettings(); ++i)
   {
     const QString name = QString::fromUtf8(vtkVoxelGISettings::GetName(i));
-    const QString type = QString::fromUtf8(vtkVoxelGISettings::GetType(i));
-    const double lo = vtkVoxelGISettings::GetMinimum(i);
-    const double hi = vtkVoxelGISettings::GetMaximum(i);
-    QWidget* control = nullptr;
-    if (type == "bool")
-    {
-      auto* check = new QCheckBox(this);
-      connect(check, &QCheckBox::toggled, this, [this, name](bool on) { this->apply(name, on); });
-      control = check;
-    }
-    else if (type == "enum")
-    {
-      auto* combo = new QComboBox(this);
-      combo->addItems(QString::fromUtf8(vtkVoxelGISettings::GetEnumerationValues(i))
-                        .split('|', Qt::SkipEmptyParts));
-      connect(combo, QOverload<int>::of(&QComboBox::currentIndexChanged), this,
-        [this, name](int index) { this->apply(name, index); });
-      control = combo;
-    }
-    else if (type == "int")
-    {
-      auto* spin = vtkVoxelGISettings::GetPowerOfTwo(i) ? new PowerOfTwoSpinBox(i, this)
-                                                        : new QSpinBox(this);
-      spin->setRange(static_cast<int>(lo), static_cast<int>(hi));
-      connect(spin, QOverload<int>::of(&QSpinBox::valueChanged), this,
-        [this, name](int value) { this->apply(name, value); });
-      control = spin;
-    }
-    else
-    {
-      auto* spin = new QDoubleSpinBox(this);
-      spin->setDecimals(3);
-      spin->setRange(lo, hi);
-      spin->setSingleStep((hi - lo) / 100.0);
-      connect(spin, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this,
-        [this, name, spin](double value) { this->applyShown(name, value, spin->decimals()); });
-      control = spin;
-    }
+    QWidget* control = this->createControl(i, name);
     control->setObjectName(name);
     control->setToolTip(ToolTip(i));
     auto* label = new QLabel(Label(name), this);

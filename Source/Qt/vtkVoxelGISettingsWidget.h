@@ -60,6 +60,8 @@ Q_SIGNALS:
   void defaultsRestored();
 
 private:
+  /// The control of setting `i` (named `name`) for its type, wired to set the pass.
+  QWidget* createControl(int i, const QString& name);
   void apply(const QString& name, double value);
   /// apply() for a control that shows `decimals` decimals: a value finer than it shows
   /// (0.0004 as 0.000) stays unless what is shown changes (Enter on an unedited control).

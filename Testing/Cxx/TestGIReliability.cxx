@@ -326,9 +326,9 @@ int EGLWithoutShim()
   return EXIT_SUCCESS;
 }
 
-const std::map<std::string, std::function<int()>>& Cases()
+const voxelgi_test::Cases& Cases()
 {
-  static const std::map<std::string, std::function<int()>> cases = {
+  static const voxelgi_test::Cases cases = {
     { "ClosingWindowKeepsOthersFollowing",
       [] {
         // A's objects freed while B's context is current must not free B's.
@@ -456,15 +456,10 @@ const std::map<std::string, std::function<int()>>& Cases()
 
 int TestGIReliability(int argc, char* argv[])
 {
-  const auto& cases = Cases();
-  for (int i = 1; i < argc; ++i)
+  int result = EXIT_FAILURE;
+  if (voxelgi_test::RunNamedCase(Cases(), argc, argv, result))
   {
-    auto found = cases.find(argv[i]);
-    if (found != cases.end())
-    {
-      std::cout << "case " << found->first << std::endl;
-      return found->second();
-    }
+    return result;
   }
   std::cerr << "FAILED: name a case" << std::endl;
   return EXIT_FAILURE;

@@ -205,9 +205,9 @@ bool Unchanged(Scene& s, vtkFloatArray* before, const char* after)
   return s.GI->GetGIActive() && d == 0.0;
 }
 
-const std::map<std::string, std::function<int()>>& Cases()
+const voxelgi_test::Cases& Cases()
 {
-  static const std::map<std::string, std::function<int()>> cases = {
+  static const voxelgi_test::Cases cases = {
     { "EmptyRenderer",
       [] {
         Scene s;
@@ -1250,15 +1250,10 @@ const std::map<std::string, std::function<int()>>& Cases()
 int TestStiffCases(int argc, char* argv[])
 {
   const auto& cases = Cases();
-  // The test driver passes the test name first; a case name may follow.
-  for (int i = 1; i < argc; ++i)
+  int result = EXIT_FAILURE;
+  if (voxelgi_test::RunNamedCase(cases, argc, argv, result))
   {
-    auto found = cases.find(argv[i]);
-    if (found != cases.end())
-    {
-      std::cout << "case " << found->first << std::endl;
-      return found->second();
-    }
+    return result;
   }
   int failures = 0;
   for (const auto& c : cases)

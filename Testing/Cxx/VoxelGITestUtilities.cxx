@@ -170,6 +170,22 @@ bool Bounded(vtkVoxelGIPass* gi)
   return true;
 }
 
+bool RunNamedCase(const Cases& cases, int argc, char* argv[], int& result)
+{
+  // The test driver passes the test name first; a case name may follow.
+  for (int i = 1; i < argc; ++i)
+  {
+    auto found = cases.find(argv[i]);
+    if (found != cases.end())
+    {
+      std::cout << "case " << found->first << std::endl;
+      result = found->second();
+      return true;
+    }
+  }
+  return false;
+}
+
 bool Within(const std::string& what, double value, double goal, double asserted)
 {
   std::cout << what << ": " << value << (value <= goal ? " (goal " : " (GOAL NOT MET: goal ")

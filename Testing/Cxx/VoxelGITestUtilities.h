@@ -11,7 +11,9 @@
 
 #include <glm/glm.hpp>
 
+#include <functional>
 #include <iostream>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -53,6 +55,12 @@ double MaxDifference(vtkDataArray* a, vtkDataArray* b);
 
 /// The stages `gi` ran in its last frame, by name, comma-separated.
 std::string StagesRan(vtkVoxelGIPass* gi);
+
+/// Cases of a test that runs one case per CTest test, by name.
+using Cases = std::map<std::string, std::function<int()>>;
+/// Runs the case of `cases` that the command line names into `result` (after printing its
+/// name); false when the command line names none.
+bool RunNamedCase(const Cases& cases, int argc, char* argv[], int& result);
 
 /// Prints `value` against its goal, as met or "GOAL NOT MET", with the bound asserted today;
 /// false (printed) when it exceeds that bound.
