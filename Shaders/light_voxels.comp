@@ -111,7 +111,9 @@ void main()
       texelFetch(voxelAlbedo, ivec3(floor(p - normalize(n))), 0).a == 0.0 &&
       texelFetch(voxelAlbedo, ivec3(floor(p - 2.0 * normalize(n))), 0).a == 0.0;
     lit = open && arriving.y > arriving.x && arriving.y > 0.9 * arriving.z ? -1.0 : 1.0;
-    result = vec4(min(radiance, vec3(VOXELGI_HALF_MAX)), 1.0);
+    // Premultiplied by the occupancy, as the cone tracer composites it: a volume's voxel
+    // stops and scatters part of the light (surfaces: all).
+    result = vec4(min(radiance, vec3(VOXELGI_HALF_MAX)) * albedo.a, albedo.a);
   }
   vec4 total = result;
   if (keepIndirect != 0 && albedo.a > 0.0)

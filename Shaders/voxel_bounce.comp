@@ -16,6 +16,11 @@ uniform int coneCount;
 uniform float coneTanHalf;
 uniform float maxDistance;
 layout(rgba16f, binding = 0) uniform writeonly image3D radianceOut;
+#ifdef VOXELGI_VOLUMES
+// The light arriving at voxels without a normal (a volume's: isotropic), which VTK's volume
+// shading adds (VolumeLighting); zero elsewhere in the occupied bricks.
+layout(r11f_g11f_b10f, binding = 1) uniform writeonly image3D incidentOut;
+#endif
 
 
 void main()
@@ -27,6 +32,9 @@ void main()
     return;
   }
   vec4 albedo = texelFetch(voxelAlbedo, v, 0);
+#ifdef VOXELGI_VOLUMES
+  imageStore(incidentOut, v, vec4(0.0));
+#endif
   if (albedo.a == 0.0)
   {
     return;
@@ -45,6 +53,9 @@ void main()
       gathered += voxelConeTrace(p + axes[i], axes[i], coneTanHalf, 1.0, maxDistance, 0.0, p, vec3(0.0), ignored).rgb;
     }
     gathered /= 6.0;
+#ifdef VOXELGI_VOLUMES
+    imageStore(incidentOut, v, vec4(gathered, 0.0));
+#endif
   }
   else
   {
@@ -60,5 +71,7 @@ void main()
     }
     gathered /= float(coneCount);
   }
-  imageStore(radianceOut, v, vec4(min(direct.rgb + albedo.rgb * gathered, vec3(VOXELGI_HALF_MAX)), 1.0));
+  // premultiplied by the occupancy (light_voxels.comp)
+  vec3 scattered = albedo.a * albedo.rgb * gathered;
+  imageStore(radianceOut, v, vec4(min(direct.rgb + scattered, vec3(VOXELGI_HALF_MAX)), albedo.a));
 }

@@ -1,6 +1,7 @@
 // Turns the accumulated sums into the voxel volumes the later stages sample: mean albedo
 // (alpha = occupied), mean unit normal (zero where the normals cancel out) and mean emission;
-// and lists the occupied bricks (brick_list.glsl).
+// and lists the occupied bricks (brick_list.glsl). With VOXELGI_VOLUMES, a voxel no surface
+// reached takes the volumes' colour and partial occupancy (voxelize_volume.comp), no normal.
 layout(local_size_x = VOXELGI_LOCAL_SIZE, local_size_y = VOXELGI_LOCAL_SIZE, local_size_z = VOXELGI_LOCAL_SIZE) in;
 
 #include "voxel_common.glsl"
@@ -10,6 +11,9 @@ layout(rgba8, binding = 1) uniform writeonly image3D voxelAlbedo;
 layout(rgba8, binding = 2) uniform writeonly image3D voxelNormal;
 #if VOXEL_CHANNELS > VOXELGI_BASE_CHANNELS
 layout(rgba16f, binding = 3) uniform writeonly image3D voxelEmission;
+#endif
+#ifdef VOXELGI_VOLUMES
+layout(rgba8, binding = 4) uniform readonly image3D volumeVoxels;
 #endif
 
 
@@ -44,6 +48,17 @@ void main()
     emission = brightest * (float(voxelEmissionCount[i]) / n);
 #endif
   }
+#ifdef VOXELGI_VOLUMES
+  else
+  {
+    vec4 volume = imageLoad(volumeVoxels, v);
+    if (volume.a > 0.0)
+    {
+      brickOccupied = 1u;
+      albedo = volume;
+    }
+  }
+#endif
   imageStore(voxelAlbedo, v, albedo);
   imageStore(voxelNormal, v, normal);
 #if VOXEL_CHANNELS > VOXELGI_BASE_CHANNELS

@@ -33,6 +33,7 @@ class LightBlock;
 class LightVoxels;
 class Ranks;
 class ShadowMaps;
+class VoxelBounce;
 class VoxelMipmap;
 class VoxelizePass;
 
@@ -101,8 +102,9 @@ struct Frame
   StageClock* Clock = nullptr;
   /// What each stage does this frame.
   FramePlan Plan;
-  /// The actors the voxels are built from.
+  /// The actors and volumes the voxels are built from.
   const std::vector<ActorRecord>* Actors = nullptr;
+  const std::vector<VolumeRecord>* Volumes = nullptr;
   /// The renderer's lights, as the light block holds them.
   const LightBlock* Lights = nullptr;
   /// The grid of the current voxels.
@@ -112,6 +114,9 @@ struct Frame
   const VoxelizePass* Voxelization = nullptr;
   const LightVoxels* Lighting = nullptr;
   const VoxelMipmap* Mipmap = nullptr;
+  /// The bounce, whose light arriving at the volumes' voxels VTK's volume shading adds
+  /// (VolumeLighting).
+  const VoxelBounce* Bounce = nullptr;
   /// The lights' shadow maps, where the pixels' shadows may use them (the pass's own lights
   /// and voxels); else null.
   const ShadowMaps* Shadows = nullptr;

@@ -80,6 +80,7 @@ bool FramePlanner::PlanVoxels(Frame& frame, bool admitted)
     this->Notices.Report(messages.Error, true);
   }
   frame.Actors = &this->Scan.GetRecords();
+  frame.Volumes = &this->Scan.GetVolumes();
   frame.Grid = frame.Plan.Voxels.Run ? frame.Plan.Voxels.Grid : this->Scan.GetGrid();
   frame.AnySpecular = this->Scan.GetAnySpecular();
   return ok;

@@ -181,6 +181,7 @@ std::size_t BytesPerTexel(GLenum internalFormat)
     case GL_RGBA8:
     case GL_R32UI:
     case GL_R32F:
+    case GL_R11F_G11F_B10F:
       return 4;
     case GL_RGBA16F:
       return 8;
@@ -283,6 +284,11 @@ void Volume3D::Upload(unsigned int format, unsigned int type, const void* data) 
   glTexSubImage3D(
     GL_TEXTURE_3D, 0, 0, 0, 0, this->Size, this->Size, this->Size, format, type, data);
   glBindTexture(GL_TEXTURE_3D, 0);
+}
+
+void Volume3D::Clear() const
+{
+  glClearTexImage(this->Handle, 0, GL_RGBA, GL_FLOAT, nullptr); // null: zero
 }
 
 void Volume3D::Release()

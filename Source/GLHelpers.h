@@ -100,6 +100,8 @@ public:
   void Read(unsigned int format, unsigned int type, void* data) const;
   /// Replace level 0 with `data`, given in `format`/`type`.
   void Upload(unsigned int format, unsigned int type, const void* data) const;
+  /// Set level 0 to zero (a float or normalized format).
+  void Clear() const;
   std::size_t Bytes() const { return this->ByteSize; }
   int Resolution() const { return this->Size; }
   void Release();

@@ -7,6 +7,8 @@
 #include "GBufferPass.h"
 #include "VoxelGIShaders.h"
 #include "StageIds.h"
+#include "VolumeLighting.h"
+#include "VoxelBounce.h"
 
 #include "vtkOpenGLFXAAFilter.h"
 #include "vtkOpenGLQuadHelper.h"
@@ -183,8 +185,13 @@ int Present::RenderRemainingSteps(const Frame& frame)
     }
     this->FXAA->Execute(openGLRenderer);
   }
-  for (vtkRenderPass* pass :
-    { steps->GetVolumetricPass(), steps->GetOverlayPass(), steps->GetPostProcessPass() })
+  // Volumes with the indirect light the scene sends them.
+  if (vtkRenderPass* volumetric = steps->GetVolumetricPass())
+  {
+    rendered += this->Volumes->Draw(
+      frame, volumetric, frame.Bounce ? frame.Bounce->GetIncident() : nullptr);
+  }
+  for (vtkRenderPass* pass : { steps->GetOverlayPass(), steps->GetPostProcessPass() })
   {
     if (pass)
     {
@@ -208,6 +215,7 @@ void Present::ReleaseGraphicsResources(vtkWindow* window)
     this->FXAA->ReleaseGraphicsResources();
     this->FXAA = nullptr;
   }
+  this->Volumes->ReleaseGraphicsResources(window);
 }
 
 }

@@ -7,13 +7,15 @@
  * (FrameCopy) where the framebuffer allows. The one full-screen fragment pass of the pipeline: the
  * framebuffer may be VTK's, ParaView's or a Qt widget's. Then VTK's own remaining steps draw
  * as VTK would draw them, with the renderer's FXAA (vtkRenderer::UseFXAA) before volumes and
- * overlays, where VTK applies it.
+ * overlays, where VTK applies it; the volumes in the voxels add the indirect light that
+ * reaches them (VolumeLighting).
  */
 #ifndef VoxelGIPresent_h
 #define VoxelGIPresent_h
 
 #include "FrameCopy.h"
 
+#include "vtkNew.h"          // for vtkNew
 #include "vtkSmartPointer.h" // for vtkSmartPointer
 
 #include <memory>
@@ -31,6 +33,7 @@ struct Frame;
 class Composite;
 class DebugView;
 class GBufferPass;
+class VolumeLighting;
 
 class Present
 {
@@ -57,6 +60,7 @@ private:
   const Composite& Compositor;
   GBufferPass& GBuffer;
   const DebugView& Debug;
+  vtkNew<VolumeLighting> Volumes; // VTK's volumes lit by GI
   std::unique_ptr<vtkOpenGLQuadHelper> Quad;
   FrameCopy Unchanged; // the last presented image, for frames that show it again
   vtkSmartPointer<vtkOpenGLFXAAFilter> FXAA;

@@ -2,6 +2,7 @@
 
 #include "ImageSliceProxies.h"
 #include "PropKeys.h"
+#include "VolumeVoxels.h"
 
 #include "vtkAbstractVolumeMapper.h"
 #include "vtkActor.h"
@@ -98,11 +99,15 @@ std::string LeftOutReason(vtkProp* prop)
   {
     return ImageSliceProxies::LeftOutReason(slice);
   }
+  if (auto* volume = vtkVolume::SafeDownCast(prop))
+  {
+    const std::string why = VolumeVoxels::LeftOutReason(volume);
+    return why.empty() ? why : std::string(prop->GetClassName()) + " (" + why + ")";
+  }
   vtkActor* actor = vtkActor::SafeDownCast(prop);
   if (!actor)
   {
-    return std::string(prop->GetClassName()) +
-      (prop->IsA("vtkVolume") ? " (a volume)" : " (not an actor)");
+    return std::string(prop->GetClassName()) + " (not an actor)";
   }
   vtkMapper* mapper = actor->GetMapper();
   // Glyph mappers draw every instance through a polydata helper, dataset mappers (any

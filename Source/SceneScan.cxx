@@ -21,6 +21,7 @@
 #include "vtkPropCollection.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
+#include "vtkVolume.h"
 
 #include <algorithm>
 #include <chrono>
@@ -167,8 +168,9 @@ ActorRecord MakeRecord(vtkProp* prop, vtkActor* actor, vtkMTimeType signature,
 }
 }
 
-bool SceneScan::Collect(vtkRenderer* renderer, bool inRender,
-  std::vector<ActorRecord>& records, double bounds[6], std::vector<std::string>& warnings)
+bool SceneScan::Collect(vtkRenderer* renderer, bool inRender, bool distributed,
+  std::vector<ActorRecord>& records, std::vector<VolumeRecord>& volumes, double bounds[6],
+  std::vector<std::string>& warnings)
 {
   // Every visible opaque surface actor drawn by a polydata mapper, including the ones outside
   // the view frustum (they still cast and reflect light).
@@ -223,6 +225,17 @@ bool SceneScan::Collect(vtkRenderer* renderer, bool inRender,
       ++leftOut["non-finite bounds (no finite point)"];
       continue;
     }
+    if (auto* volume = vtkVolume::SafeDownCast(prop))
+    {
+      if (distributed)
+      {
+        ++leftOut["vtkVolume (volumes in a distributed render)"];
+        continue;
+      }
+      volumes.push_back({ volume, signature });
+      Merge(bounds, b, records.empty() && volumes.size() == 1);
+      continue;
+    }
     // An image slice is voxelized through its proxy: a textured quad.
     vtkActor* actor = vtkActor::SafeDownCast(prop);
     if (auto* slice = vtkImageSlice::SafeDownCast(prop))
@@ -238,14 +251,14 @@ bool SceneScan::Collect(vtkRenderer* renderer, bool inRender,
     }
     records.push_back(MakeRecord(
       prop, actor, signature, reading.InputTime, previous(actor), warnings));
-    Merge(bounds, b, records.size() == 1);
+    Merge(bounds, b, records.size() == 1 && volumes.empty());
     anySpecular = anySpecular || actor->GetProperty()->GetSpecular() > 0.0;
   }
   this->Reader.End();
   this->Slices.Retain(slices);
   this->ReportLeftOut(leftOut, warnings);
   this->AnySpecular = anySpecular;
-  return !records.empty();
+  return !records.empty() || !volumes.empty();
 }
 
 void SceneScan::ReportLeftOut(
@@ -359,9 +372,14 @@ bool SceneScan::Scan(vtkRenderer* renderer, const Settings& settings, Ranks& ran
 
   update = VoxelUpdate();
   std::vector<ActorRecord> records;
+  std::vector<VolumeRecord> volumes;
   Findings found;
-  found.Collected = this->Collect(renderer, inRender, records, found.Bounds, messages.Warnings);
+  found.Collected = this->Collect(
+    renderer, inRender, ranks.Distributed(), records, volumes, found.Bounds, messages.Warnings);
   this->Compare(records, settings.AutoDynamic, found.Full, found.Dynamic);
+  // A volume that changed is resampled and merged again by the resolve: the actors' voxels
+  // stay.
+  found.Dynamic = found.Dynamic || volumes != this->Volumes;
   for (const ActorRecord& record : records)
   {
     found.Emission = found.Emission || Emits(record.Emission);
@@ -380,6 +398,7 @@ bool SceneScan::Scan(vtkRenderer* renderer, const Settings& settings, Ranks& ran
   if (!found.Collected)
   {
     this->Records.clear();
+    this->Volumes.clear();
     return false;
   }
   const double* bounds = found.Bounds;
@@ -406,11 +425,14 @@ bool SceneScan::Scan(vtkRenderer* renderer, const Settings& settings, Ranks& ran
   {
     messages.Error = "Could not fit a voxel grid around the scene bounds; rendering without GI.";
     this->Records.clear();
+    this->Volumes.clear();
     return false;
   }
   update.Run = true;
   update.Emission = found.Emission;
+  update.Volumes = !volumes.empty();
   this->Pending = std::move(records);
+  this->PendingVolumes = std::move(volumes);
   return true;
 }
 
@@ -419,6 +441,8 @@ void SceneScan::Accept(const VoxelUpdate& update, const Settings& settings)
 {
   this->Records = std::move(this->Pending);
   this->Pending.clear();
+  this->Volumes = std::move(this->PendingVolumes);
+  this->PendingVolumes.clear();
   this->BuiltGrid = update.Grid;
   this->BuiltPadding = settings.GridPadding;
   this->BuiltEmission = update.Emission;
@@ -431,6 +455,8 @@ void SceneScan::Reset()
 {
   this->Records.clear();
   this->Pending.clear();
+  this->Volumes.clear();
+  this->PendingVolumes.clear();
   this->Voxelized = false;
   this->BuiltGrid = VoxelGrid();
   this->PropSignatures.clear();

@@ -13,6 +13,7 @@
 #include "ImageSliceProxies.h"
 #include "PropKeys.h"
 #include "PropReader.h"
+#include "VolumeVoxels.h"
 #include "VoxelGrid.h"
 
 #include "vtkType.h"         // for vtkMTimeType
@@ -57,6 +58,7 @@ struct VoxelUpdate
   bool Run = false;     // rebuild any voxels at all
   bool Full = false;    // all of them (else the dynamic actors only)
   bool Emission = false; // the scene has emissive props
+  bool Volumes = false;  // the scene has volumes to resample (VolumeVoxels)
   VoxelGrid Grid;       // the grid to voxelize into
 };
 
@@ -86,6 +88,8 @@ public:
   const VoxelGrid& GetGrid() const { return this->BuiltGrid; }
   /// The actors the voxels were built from, in scene order.
   const std::vector<ActorRecord>& GetRecords() const { return this->Records; }
+  /// The volumes resampled into the voxels (VolumeVoxels), in scene order.
+  const std::vector<VolumeRecord>& GetVolumes() const { return this->Volumes; }
   /// Any voxelized actor with a specular coefficient above 0 (else no specular cone).
   bool GetAnySpecular() const { return this->AnySpecular; }
   /// CPU time of the last Scan(), milliseconds.
@@ -101,9 +105,11 @@ public:
     vtkRenderer* renderer, vtkMTimeType settingsTime, bool scanned) const;
 
 private:
-  /// Collect the visible opaque surface actors; false when there is none.
-  bool Collect(vtkRenderer* renderer, bool inRender, std::vector<ActorRecord>& records,
-    double bounds[6], std::vector<std::string>& warnings);
+  /// Collect the visible opaque surface actors and the volumes (none in a `distributed`
+  /// render: a rank would resample its piece alone); false when there is neither.
+  bool Collect(vtkRenderer* renderer, bool inRender, bool distributed,
+    std::vector<ActorRecord>& records, std::vector<VolumeRecord>& volumes, double bounds[6],
+    std::vector<std::string>& warnings);
   /// Warn once about each new kind of prop left to VTK (`leftOut`: reason -> count).
   void ReportLeftOut(const std::map<std::string, int>& leftOut, std::vector<std::string>& warnings);
   /// Compare with the accepted records: full rebuild, dynamic change, or nothing.
@@ -115,6 +121,8 @@ private:
   PropReader Reader;        // what was read of each view prop, kept between frames
   std::vector<ActorRecord> Records;
   std::vector<ActorRecord> Pending; // scanned, waiting for Accept()
+  std::vector<VolumeRecord> Volumes;
+  std::vector<VolumeRecord> PendingVolumes;
   bool Voxelized = false;
   VoxelGrid BuiltGrid;
   double BuiltPadding = -1.0;

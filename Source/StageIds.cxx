@@ -10,7 +10,7 @@ namespace stage
 const char* Name(int id)
 {
   static const char* names[Count] = { "Scan", "Clear", "VoxelizeStatic", "VoxelizeDynamic",
-    "Resolve", "ShadowMaps", "LightVoxels", "Mipmap", "Bounce", "GBuffer", "ConeTrace",
+    "Volumes", "Resolve", "ShadowMaps", "LightVoxels", "Mipmap", "Bounce", "GBuffer", "ConeTrace",
     "Composite", "Present", "DebugView" };
   return (id >= 0 && id < Count) ? names[id] : "Unknown";
 }
@@ -26,6 +26,7 @@ static_assert(
   int(vtkVoxelGIPass::STAGE_VOXELIZE_STATIC) == voxelgi::stage::VoxelizeStatic, "VoxelizeStatic");
 static_assert(
   int(vtkVoxelGIPass::STAGE_VOXELIZE_DYNAMIC) == voxelgi::stage::VoxelizeDynamic, "VoxelizeDynamic");
+static_assert(int(vtkVoxelGIPass::STAGE_VOLUMES) == voxelgi::stage::Volumes, "Volumes");
 static_assert(int(vtkVoxelGIPass::STAGE_RESOLVE) == voxelgi::stage::Resolve, "Resolve");
 static_assert(int(vtkVoxelGIPass::STAGE_SHADOW_MAPS) == voxelgi::stage::ShadowMaps, "ShadowMaps");
 static_assert(int(vtkVoxelGIPass::STAGE_LIGHT) == voxelgi::stage::LightVoxels, "LightVoxels");

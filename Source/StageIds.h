@@ -16,6 +16,7 @@ enum Id
   Clear,
   VoxelizeStatic,
   VoxelizeDynamic,
+  Volumes,
   Resolve,
   ShadowMaps,
   LightVoxels,

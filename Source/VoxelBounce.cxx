@@ -16,7 +16,22 @@ namespace voxelgi
 bool VoxelBounce::Prepare(const Frame& frame, std::string& error)
 {
   this->Cones.Set(frame.Config, frame.Grid.Resolution);
-  return this->Program.BuildOnce(shaders::voxel_bounce_comp, "voxel bounce", error);
+  const bool volumes = frame.Volumes && !frame.Volumes->empty();
+  if (!volumes)
+  {
+    this->Incident.Release();
+  }
+  else if (this->Incident.Resolution() != frame.Grid.Resolution)
+  {
+    if (!this->Incident.Allocate(GL_R11F_G11F_B10F, frame.Grid.Resolution))
+    {
+      error = "could not allocate the volumes' incident light";
+      return false;
+    }
+    this->Incident.Clear(); // bricks the bounce never visits stay dark
+  }
+  return this->Program.BuildOnce(shaders::voxel_bounce_comp, "voxel bounce", error,
+    volumes ? "#define VOXELGI_VOLUMES\n" : "");
 }
 
 void VoxelBounce::Run(const Frame& frame)
@@ -50,6 +65,10 @@ void VoxelBounce::Bounce(const Frame& frame)
   p.SetFloat("coneTanHalf", this->Cones.TanHalf);
   p.SetFloat("maxDistance", this->Cones.MaxDistance);
   radiance.BindImage(0, GL_WRITE_ONLY);
+  if (this->Incident.IsAllocated())
+  {
+    this->Incident.BindImage(1, GL_WRITE_ONLY);
+  }
   this->Voxels.GetBrickList().Bind(VOXELGI_BRICK_LIST_BINDING);
   p.DispatchIndirect(this->Voxels.GetBrickList());
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
@@ -58,6 +77,7 @@ void VoxelBounce::Bounce(const Frame& frame)
 void VoxelBounce::ReleaseGraphicsResources(vtkWindow*)
 {
   this->Program.Release();
+  this->Incident.Release();
 }
 
 }

@@ -34,6 +34,12 @@ public:
   bool Prepare(const Frame& frame, std::string& error);
   /// The plan's bounces, each followed by a rebuild of the mipmaps.
   void Run(const Frame& frame);
+  /// The indirect light arriving at the volumes' voxels (the last bounce's), for VTK's volume
+  /// shading (VolumeLighting); null in scenes without volumes.
+  const Volume3D* GetIncident() const
+  {
+    return this->Incident.IsAllocated() ? &this->Incident : nullptr;
+  }
   void ReleaseGraphicsResources(vtkWindow* window);
 
 private:
@@ -44,6 +50,7 @@ private:
   VoxelMipmap& Mipmap;
   ConeSettings Cones;
   ComputeProgram Program;
+  Volume3D Incident;
 };
 
 }

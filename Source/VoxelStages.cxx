@@ -10,13 +10,23 @@
 namespace voxelgi
 {
 
+void VoxelStages::Wire(Frame& frame) const
+{
+  frame.Voxelization = this->Voxelize;
+  frame.Lighting = &this->Lighting;
+  frame.Mipmap = &this->Mipmap;
+  frame.Shadows = &this->Shadows;
+  frame.Bounce = &this->Bounce;
+}
+
 bool VoxelStages::Relight(const Frame& frame, std::string& error, std::string& note)
 {
   // The light block is bound by the caller; the grid block too.
   bool ok = true;
-  // A rank's maps would see its own piece only; the raymarch sees the merged voxels.
+  // A rank's maps would see its own piece only; the raymarch sees the merged voxels. A
+  // depth map holds no partial occupancy: with volumes, light is traced through the voxels.
   if (frame.Config.LightOcclusion == LIGHT_OCCLUSION_SHADOW_MAPS &&
-    !frame.Processes->Distributed())
+    !frame.Processes->Distributed() && (!frame.Volumes || frame.Volumes->empty()))
   {
     ok = this->Shadows.Prepare(frame, error, note);
     if (ok)
@@ -59,7 +69,8 @@ unsigned long long VoxelStages::AllocatedBytes(int resource) const
     case vtkVoxelGIPass::RESOURCE_SHADOW_MAPS:
       return this->Shadows.Maps.Bytes();
     case vtkVoxelGIPass::RESOURCE_SCENE_BUFFERS:
-      return this->Voxelize->SceneBytes();
+      return this->Voxelize->SceneBytes() +
+        (this->Bounce.GetIncident() ? this->Bounce.GetIncident()->Bytes() : 0);
     default:
       return 0;
   }

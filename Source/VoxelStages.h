@@ -32,6 +32,8 @@ struct VoxelStages
   VoxelMipmap Mipmap{ Lighting };
   VoxelBounce Bounce{ *Voxelize, Lighting, Mipmap };
 
+  /// Point the frame at these stages' volumes, maps and lights.
+  void Wire(Frame& frame) const;
   /// ShadowMaps (scene lights, one process), LightVoxels, Mipmap and Bounce; false with
   /// `error` when one cannot be prepared; `note` says what was made smaller than asked.
   bool Relight(const Frame& frame, std::string& error, std::string& note);

@@ -74,9 +74,14 @@ bool VoxelizePass::Prepare(const Frame& frame, std::string& error)
   const int resolution = frame.Plan.Voxels.Grid.Resolution;
   const bool emission = frame.Plan.Voxels.Emission;
   this->HardwareConservative = frame.Config.HardwareConservativeRaster;
+  if (!this->Volumes.Prepare(frame, error))
+  {
+    this->ReleaseGraphicsResources(frame.Window);
+    return false;
+  }
   if (resolution == this->Resolution && emission == this->Emission && this->ClearProgram.IsReady())
   {
-    return true;
+    return this->PrepareResolve(error);
   }
   const std::size_t channelBytes = Cube(resolution) * 4;
   GLint64 maxBlock = 0;
@@ -127,8 +132,7 @@ bool VoxelizePass::Prepare(const Frame& frame, std::string& error)
   if (variantChanged)
   {
     std::string log;
-    if (!this->ClearProgram.Build(this->Defines(), shaders::clear_dynamic_comp, log) ||
-      !this->ResolveProgram.Build(this->Defines(), shaders::voxel_resolve_comp, log))
+    if (!this->ClearProgram.Build(this->Defines(), shaders::clear_dynamic_comp, log))
     {
       error = "voxel compute shaders failed to build: " + log;
       this->ReleaseGraphicsResources(frame.Window);
@@ -136,12 +140,20 @@ bool VoxelizePass::Prepare(const Frame& frame, std::string& error)
     }
     this->ShaderStageTime.Modified(); // the mapper shaders depend on the emission variant
   }
-  if (!this->Compute.Prepare(this->Defines(), error))
+  if (!this->Compute.Prepare(this->Defines(), error) || !this->PrepareResolve(error))
   {
     this->ReleaseGraphicsResources(frame.Window);
     return false;
   }
   return true;
+}
+
+bool VoxelizePass::PrepareResolve(std::string& error)
+{
+  // The variant with volumes reads their voxels; without, nothing is bound for them.
+  const std::string volumes = this->Volumes.GetGrid() ? "#define VOXELGI_VOLUMES\n" : "";
+  return this->ResolveProgram.BuildOnce(
+    shaders::voxel_resolve_comp, "voxel resolve", error, this->Defines() + volumes);
 }
 
 void VoxelizePass::ListEveryBrick()
@@ -238,6 +250,7 @@ void VoxelizePass::Run(const Frame& frame)
   // GL rejects those draws (they have no area to voxelize). Do not leave the errors to VTK.
   ClearErrors();
   this->MergeSums(frame);
+  this->Volumes.Run(frame);
   this->Resolve(frame);
 }
 
@@ -371,6 +384,10 @@ void VoxelizePass::Resolve(const Frame& frame)
   {
     this->EmissionVolume.BindImage(3, GL_WRITE_ONLY);
   }
+  if (const Volume3D* volumes = this->Volumes.GetGrid())
+  {
+    volumes->BindImage(4, GL_READ_ONLY);
+  }
   this->ResolveProgram.Use(frame.Window);
   this->ResolveProgram.DispatchCube(this->Resolution, VOXELGI_LOCAL_SIZE);
   Barrier();
@@ -479,6 +496,7 @@ void VoxelizePass::ReleaseGraphicsResources(vtkWindow* window)
   this->EmissionVolume.Release();
   this->ClearProgram.Release();
   this->ResolveProgram.Release();
+  this->Volumes.ReleaseGraphicsResources(window);
   this->Framebuffer.Release();
   this->Copies.ReleaseGraphicsResources(window);
   this->Compute.ReleaseGraphicsResources();

@@ -9,13 +9,15 @@
  * A flag volume marks voxels written by static actors: dynamic actors skip them, and the
  * clear (clear_dynamic.comp) keeps them. The resolve (voxel_resolve.comp) turns the sums into
  * the sampled volumes: albedo and normal RGBA8, emission RGBA16F; and lists the occupied
- * bricks, which the later per-voxel stages work on.
+ * bricks, which the later per-voxel stages work on. Where no surface is, it takes the
+ * renderer's volumes (VolumeVoxels) with their partial occupancy and no normal.
  */
 #ifndef VoxelGIVoxelizePass_h
 #define VoxelGIVoxelizePass_h
 
 #include "GLHelpers.h"
 #include "MapperCopies.h"
+#include "VolumeVoxels.h"
 #include "VoxelizeCompute.h"
 #include "shader_interface.h"
 
@@ -60,9 +62,12 @@ public:
   std::size_t MemoryBytes() const;
   /// The part of MemoryBytes() that only emissive scenes need.
   std::size_t EmissionBytes() const;
-  /// The actors' triangles kept for compute voxelization (not in MemoryBytes(): they follow
-  /// the scene, not the settings).
-  std::size_t SceneBytes() const { return this->Compute.MemoryBytes(); }
+  /// The actors' triangles kept for compute voxelization and the volumes' voxels and
+  /// textures (not in MemoryBytes(): they follow the scene, not the settings).
+  std::size_t SceneBytes() const
+  {
+    return this->Compute.MemoryBytes() + this->Volumes.MemoryBytes();
+  }
 
   /// The sampled volumes (emission only in emissive scenes).
   const Volume3D& GetAlbedo() const { return this->AlbedoVolume; }
@@ -93,6 +98,8 @@ private:
   void operator=(const VoxelizePass&) = delete;
 
   std::string Defines() const;
+  /// Build the resolve for the frame's variant (emission, volumes).
+  bool PrepareResolve(std::string& error);
   /// Aim the voxelization camera: its view volume is the grid cube.
   void AimCamera(const Frame& frame);
   /// Render `props` through their mappers and voxelize `items` by compute into the
@@ -128,6 +135,7 @@ private:
   ViewRenderer View; // draws through the grid camera
   MapperCopies Copies; // draw the actors with this pass's shader code only
   VoxelizeCompute Compute; // the actors read into buffers
+  VolumeVoxels Volumes;    // the volumes, merged by the resolve
   vtkTimeStamp ShaderStageTime;
 };
 

@@ -297,10 +297,7 @@ voxelgi::FramePlan& vtkVoxelGIPass::PlanVoxels(vtkRenderer* renderer, const vtkR
     frame.Delegate = this->DelegatePass;
     frame.Processes = &in.Processes;
     frame.Clock = &in.Clock;
-    frame.Voxelization = in.Voxels.Voxelize;
-    frame.Lighting = &in.Voxels.Lighting;
-    frame.Mipmap = &in.Voxels.Mipmap;
-    frame.Shadows = &in.Voxels.Shadows;
+    in.Voxels.Wire(frame);
     renderer->GetTiledSizeAndOrigin(&frame.Width, &frame.Height, &frame.X, &frame.Y);
     frame.Config = voxelgi::Snapshot(
       this, in.Gate.HasConservativeRaster(), in.Gate.SoftwareProfile(this->SoftwareProfile));

@@ -160,6 +160,7 @@ public:
     STAGE_CLEAR,
     STAGE_VOXELIZE_STATIC,
     STAGE_VOXELIZE_DYNAMIC,
+    STAGE_VOLUMES,
     STAGE_RESOLVE,
     STAGE_SHADOW_MAPS,
     STAGE_LIGHT,
@@ -246,7 +247,8 @@ public:
     RESOURCE_DIRECT,           ///< direct light kept for bounces (Bounces > 0 only)
     RESOURCE_DIRECTIONAL,      ///< the six anisotropic volumes (anisotropic mipmaps only)
     RESOURCE_SHADOW_MAPS,      ///< shadow maps (LIGHT_OCCLUSION_SHADOW_MAPS only)
-    RESOURCE_SCENE_BUFFERS     ///< the actors' triangles compute voxelization reads (scene-sized,
+    RESOURCE_SCENE_BUFFERS     ///< the actors' triangles compute voxelization reads, the
+                               ///< volumes' textures, voxels and incident light (scene-sized,
                                ///< not in GetVoxelMemoryBytes())
   };
 

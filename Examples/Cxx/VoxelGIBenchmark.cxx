@@ -1,6 +1,6 @@
 // Per-stage timing of vtkVoxelGIPass over scripted frame sequences (a benchmark, not a test).
 //
-//   VoxelGIBenchmark [--scene cornell|field|atrium|sphere] [--objects N] [--triangles N]
+//   VoxelGIBenchmark [--scene cornell|field|atrium|sphere|volume] [--objects N] [--triangles N]
 //                    [--size WxH] [--resolution R] [--frames F] [--warmup W] [--trace-scale S]
 //                    [--multisamples N] [--egl] [--temporal-reuse 0|1] [--bounces N]
 //                    [--update-interval N] [--viewports N] [--shared-grid 0|1]
@@ -9,12 +9,14 @@
 //
 // Scenes: the Cornell box (36 triangles), a field of N spheres and boxes on a ground plane
 // (N + 1 actors), an atrium of Sponza scale (about 280k triangles: columns, arches,
-// galleries, drapes, coloured), and one tessellated sphere of about N triangles.
+// galleries, drapes, coloured), one tessellated sphere of about N triangles, and a 256^3 volume
+// (VTK's wavelet, GPU ray cast) over a floor beside a sphere.
 // Sequences: static (nothing changes), orbit (camera only), headlight-orbit (the same orbit
 // with the scene's lights off and VTK's headlight on: the light turns with the camera), light
 // (one light moves), one-moving (one dynamic actor moves), all-moving (every actor moves),
 // new-data (every actor's data replaced, as by a time step: its points modified), plain (GI off,
-// VTK alone, static) and plain-new-data (GI off, new data each frame); --sequences runs some of
+// VTK alone, static), plain-new-data (GI off, new data each frame) and transfer-function (the
+// volumes' opacity changes: resampled every frame); --sequences runs some of
 // them. Per frame: the wall time of Render() with glFinish, its CPU time (Render() returning,
 // without glFinish), the GPU time span of the frame (two timestamp queries) and per-stage GPU times
 // (timer queries) go to the CSV; the JSON and the printed table hold medians per sequence, and the
@@ -34,7 +36,14 @@
 #include "vtkActor.h"
 #include "vtkActorCollection.h"
 #include "vtkCamera.h"
+#include "vtkColorTransferFunction.h"
 #include "vtkCubeSource.h"
+#include "vtkGPUVolumeRayCastMapper.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkRTAnalyticSource.h"
+#include "vtkVolume.h"
+#include "vtkVolumeCollection.h"
+#include "vtkVolumeProperty.h"
 #include "vtkCylinderSource.h"
 #include "vtkPNGWriter.h"
 #include "vtkParametricFunctionSource.h"
@@ -156,6 +165,48 @@ void AddSphere(vtkRenderer* renderer, long long triangles)
   sun->SetLightTypeToSceneLight();
   sun->SetPositional(false);
   sun->SetPosition(2.0, 4.0, 3.0);
+  sun->SetFocalPoint(0.0, 0.0, 0.0);
+  renderer->AddLight(sun);
+  renderer->ResetCamera();
+}
+
+// A 256^3 volume (VTK's wavelet through colour and opacity transfer functions, GPU ray cast)
+// over a floor, beside a sphere, under a sun.
+void AddVolume(vtkRenderer* renderer)
+{
+  vtkNew<vtkRTAnalyticSource> wavelet;
+  wavelet->SetWholeExtent(-128, 127, -128, 127, -128, 127);
+  vtkNew<vtkPiecewiseFunction> opacity;
+  opacity->AddPoint(60.0, 0.0);
+  opacity->AddPoint(160.0, 0.05);
+  opacity->AddPoint(280.0, 0.5);
+  vtkNew<vtkColorTransferFunction> color;
+  color->AddRGBPoint(60.0, 0.8, 0.3, 0.1);
+  color->AddRGBPoint(280.0, 1.0, 0.95, 0.8);
+  vtkNew<vtkGPUVolumeRayCastMapper> mapper;
+  mapper->SetInputConnection(wavelet->GetOutputPort());
+  vtkNew<vtkVolume> volume;
+  volume->SetMapper(mapper);
+  volume->GetProperty()->SetScalarOpacity(opacity);
+  volume->GetProperty()->SetColor(color);
+  volume->GetProperty()->SetScalarOpacityUnitDistance(4.0);
+  volume->GetProperty()->SetInterpolationTypeToLinear();
+  renderer->AddVolume(volume);
+  vtkNew<vtkPlaneSource> floor;
+  floor->SetOrigin(-200.0, -130.0, -200.0);
+  floor->SetPoint1(-200.0, -130.0, 200.0);
+  floor->SetPoint2(300.0, -130.0, -200.0);
+  vtkVoxelGIScenes::AddSource(renderer, floor, 0.8, 0.8, 0.8);
+  vtkNew<vtkSphereSource> ball;
+  ball->SetCenter(200.0, -60.0, 0.0);
+  ball->SetRadius(70.0);
+  ball->SetThetaResolution(64);
+  ball->SetPhiResolution(64);
+  vtkVoxelGIScenes::AddSource(renderer, ball, 0.3, 0.5, 0.9);
+  vtkNew<vtkLight> sun;
+  sun->SetLightTypeToSceneLight();
+  sun->SetPositional(false);
+  sun->SetPosition(-1.0, 3.0, 1.0);
   sun->SetFocalPoint(0.0, 0.0, 0.0);
   renderer->AddLight(sun);
   renderer->ResetCamera();
@@ -339,7 +390,8 @@ bool Parse(int argc, char* argv[], Options& o)
     }
   }
   return o.Width > 0 && o.Height > 0 && o.Frames > 0 && o.Viewports >= 1 && o.Viewports <= 16 &&
-    (o.Scene == "cornell" || o.Scene == "field" || o.Scene == "atrium" || o.Scene == "sphere");
+    (o.Scene == "cornell" || o.Scene == "field" || o.Scene == "atrium" || o.Scene == "sphere" ||
+      o.Scene == "volume");
 }
 }
 
@@ -348,7 +400,7 @@ int main(int argc, char* argv[])
   Options o;
   if (!Parse(argc, argv, o))
   {
-    std::cerr << "usage: VoxelGIBenchmark [--scene cornell|field|atrium|sphere] [--objects N] "
+    std::cerr << "usage: VoxelGIBenchmark [--scene cornell|field|atrium|sphere|volume] [--objects N] "
                  "[--triangles N] [--size WxH] [--resolution R] [--frames F] [--warmup W] "
                  "[--trace-scale S] [--multisamples N] [--egl] [--temporal-reuse 0|1] "
                  "[--bounces N] [--update-interval N] [--viewports N] [--shared-grid 0|1] "
@@ -369,6 +421,10 @@ int main(int argc, char* argv[])
   else if (o.Scene == "sphere")
   {
     AddSphere(renderer, o.Triangles);
+  }
+  else if (o.Scene == "volume")
+  {
+    AddVolume(renderer);
   }
   else
   {
@@ -558,6 +614,16 @@ int main(int argc, char* argv[])
     { "new-data", newData, true },
     { "plain", [](int) {}, false },
     { "plain-new-data", newData, false },
+    { "transfer-function",
+      [&](int f) {
+        vtkCollectionSimpleIterator vit;
+        renderer->GetVolumes()->InitTraversal(vit);
+        while (vtkVolume* volume = renderer->GetVolumes()->GetNextVolume(vit))
+        {
+          volume->GetProperty()->GetScalarOpacity()->AddPoint(220.0, 0.2 + 0.1 * std::sin(0.3 * f));
+        }
+      },
+      true },
   };
 
   std::vector<const Sequence*> selected;

@@ -56,6 +56,7 @@ std::vector<Shader> EmbeddedShaders()
     { "gbuffer.frag", s::gbuffer_frag }, { "light_voxels.comp", s::light_voxels_comp },
     { "present.frag", s::present_frag }, { "voxel_bounce.comp", s::voxel_bounce_comp },
     { "voxel_mipmap.comp", s::voxel_mipmap_comp }, { "voxel_resolve.comp", s::voxel_resolve_comp },
+    { "voxelize_volume.comp", s::voxelize_volume_comp },
     { "voxelize.frag", s::voxelize_frag }, { "voxelize.geom", s::voxelize_geom } };
 }
 
