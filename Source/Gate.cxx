@@ -7,6 +7,7 @@
 #include "vtkImageProcessingPass.h"
 #include "vtkObject.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkOutputWindow.h"
 #include "vtkRenderer.h"
 #include "vtkRenderPassCollection.h"
 #include "vtkSSAOPass.h"
@@ -227,6 +228,15 @@ bool Gate::SoftwareProfile(int profile)
         "): GI runs in its software profile (at most 64^3 voxels, 4 cones traced at a quarter of "
         "the resolution) to answer in about a second. Set SoftwareProfile to Off "
         "for the full settings (tens of seconds a frame).");
+  }
+  else if (!applies && this->SoftwareRenderer && !this->SaidSlow)
+  {
+    // Not a warning (nothing is wrong), but minutes of silence look like a hang.
+    this->SaidSlow = true;
+    vtkOutputWindowDisplayText(("Voxel GI on " + this->RendererName +
+      ", a CPU renderer, with SoftwareProfile Off: its first frame compiles every shader and "
+      "builds every volume on the CPU (about a minute at 128^3 voxels), later frames take "
+      "tens of seconds.\n").c_str());
   }
   return applies;
 }

@@ -82,7 +82,8 @@ public:
   /// Whether the software profile applies with the setting `profile` (SOFTWARE_PROFILE_*) on
   /// the context checked last.
   bool SoftwareProfileApplies(int profile) const;
-  /// SoftwareProfileApplies; chosen by AUTO, it is said once.
+  /// SoftwareProfileApplies; chosen by AUTO, it is said once; turned off on a software
+  /// renderer, that the first frame takes long is said once (as text, not as a warning).
   bool SoftwareProfile(int profile);
   /// Whether a viewport of `width` x `height` fits GL's image size limits (said once a size).
   bool ViewportFits(int width, int height);
@@ -113,6 +114,7 @@ private:
   bool ContextOk = false;
   bool ConservativeRaster = false;
   bool SoftwareRenderer = false;
+  bool SaidSlow = false; // that a software renderer without the profile takes long
   std::string RendererName; // the context's GL_RENDERER
   vtkWeakPointer<vtkRenderWindow> CheckedWindow; // the window whose context was checked
   int RefusedSize[2] = { 0, 0 }; // the viewport size last refused as too large

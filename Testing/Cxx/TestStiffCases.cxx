@@ -29,6 +29,7 @@
 #include "vtkNew.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOutputWindow.h"
+#include "vtkStringOutputWindow.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -733,11 +734,24 @@ const voxelgi_test::Cases& Cases()
         s.GI->SetVoxelResolution(96);
         s.Window->Render();
         VOXELGI_CHECK(dimension() == 64, "On: grid of " << dimension());
+        // Off: no warning, but on a CPU renderer the slow first frame is said once, as text.
         s.GI->SetSoftwareProfileToOff();
         s.GI->SetVoxelResolution(32);
         s.Log.Text.clear();
+        vtkNew<vtkStringOutputWindow> output;
+        vtkSmartPointer<vtkOutputWindow> previous = vtkOutputWindow::GetInstance();
+        vtkOutputWindow::SetInstance(output);
         s.Window->Render();
+        s.GI->Invalidate();
+        s.Window->Render();
+        vtkOutputWindow::SetInstance(previous);
         VOXELGI_CHECK(dimension() == 32 && s.Log.Text.empty(), "Off: grid of " << dimension());
+        const std::string said = output->GetOutput();
+        const std::size_t slow = said.find("with SoftwareProfile Off");
+        VOXELGI_CHECK(cpu ? slow != std::string::npos &&
+              said.find("with SoftwareProfile Off", slow + 1) == std::string::npos
+                          : slow == std::string::npos,
+          "Off, said: " << said);
         return EXIT_SUCCESS;
       } },
     { "ResizeEveryFrameAndRelease",
