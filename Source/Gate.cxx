@@ -218,7 +218,7 @@ bool Gate::SoftwareProfileApplies(int profile) const
   return voxelgi::SoftwareProfileApplies(profile, this->SoftwareRenderer);
 }
 
-bool Gate::SoftwareProfile(int profile)
+bool Gate::SoftwareProfile(int profile, int resolution)
 {
   const bool applies = this->SoftwareProfileApplies(profile);
   if (applies && profile == SOFTWARE_PROFILE_AUTO)
@@ -229,14 +229,14 @@ bool Gate::SoftwareProfile(int profile)
         "the resolution) to answer in about a second. Set SoftwareProfile to Off "
         "for the full settings (tens of seconds a frame).");
   }
-  else if (!applies && this->SoftwareRenderer && !this->SaidSlow)
+  else if (!applies && this->SoftwareRenderer && resolution >= 128 && !this->SaidSlow)
   {
     // Not a warning (nothing is wrong), but minutes of silence look like a hang.
     this->SaidSlow = true;
     vtkOutputWindowDisplayText(("Voxel GI on " + this->RendererName +
-      ", a CPU renderer, with SoftwareProfile Off: its first frame compiles every shader and "
-      "builds every volume on the CPU (about a minute at 128^3 voxels), later frames take "
-      "tens of seconds.\n").c_str());
+      ", a CPU renderer, with SoftwareProfile Off at " + std::to_string(resolution) +
+      "^3 voxels: its first frame compiles every shader and builds every volume on the CPU "
+      "(a minute or more), later frames take tens of seconds.\n").c_str());
   }
   return applies;
 }

@@ -83,8 +83,9 @@ public:
   /// the context checked last.
   bool SoftwareProfileApplies(int profile) const;
   /// SoftwareProfileApplies; chosen by AUTO, it is said once; turned off on a software
-  /// renderer, that the first frame takes long is said once (as text, not as a warning).
-  bool SoftwareProfile(int profile);
+  /// renderer at `resolution` 128 or more, that the first frame takes long is said once (as
+  /// text, not as a warning).
+  bool SoftwareProfile(int profile, int resolution);
   /// Whether a viewport of `width` x `height` fits GL's image size limits (said once a size).
   bool ViewportFits(int width, int height);
 

@@ -299,8 +299,8 @@ voxelgi::FramePlan& vtkVoxelGIPass::PlanVoxels(vtkRenderer* renderer, const vtkR
     frame.Clock = &in.Clock;
     in.Voxels.Wire(frame);
     renderer->GetTiledSizeAndOrigin(&frame.Width, &frame.Height, &frame.X, &frame.Y);
-    frame.Config = voxelgi::Snapshot(
-      this, in.Gate.HasConservativeRaster(), in.Gate.SoftwareProfile(this->SoftwareProfile));
+    frame.Config = voxelgi::Snapshot(this, in.Gate.HasConservativeRaster(),
+      in.Gate.SoftwareProfile(this->SoftwareProfile, this->VoxelResolution));
   }
   frame.Plan.GI = admitted && in.Gate.ViewportFits(frame.Width, frame.Height);
   if (!this->VoxelSource)

@@ -13,7 +13,7 @@
 //
 //   VoxelGIErrorStudy [--egl] SCENE REFERENCE.pfm OUT.csv [frames]
 //
-// SCENE: cornell, glossy, isosurface, glyphs, emissive or streamlines
+// SCENE: cornell, glossy, isosurface, glyphs, emissive, streamlines or volume
 // (vtkVoxelGIScenes::AddScene), or a description FILE.json (Testing/Reference/study_scene.sh
 // renders its reference and runs this). --egl renders headless through EGL
 // (vtkVoxelGIEGLRenderWindow), as on a GPU machine without X.
@@ -34,6 +34,7 @@
 #include "vtkRenderer.h"
 #include "vtkSSAOPass.h"
 #include "vtkSmartPointer.h"
+#include "vtkVolumeCollection.h"
 
 #include <algorithm>
 #include <chrono>
@@ -249,9 +250,12 @@ int main(int argc, char* argv[])
       cameraMs = timeFrames(false);
     }
 
+    // VTK draws volumes over the composite: where the scene has one, the window's image is
+    // what the reference shows.
     vtkNew<vtkFloatArray> pixels;
-    if (!(usesPass && gi->GetEnabled() &&
-          gi->GetFloatImage(vtkVoxelGIPass::IMAGE_COMPOSITE, pixels)))
+    if (renderer->GetVolumes()->GetNumberOfItems() > 0 ||
+      !(usesPass && gi->GetEnabled() &&
+        gi->GetFloatImage(vtkVoxelGIPass::IMAGE_COMPOSITE, pixels)))
     {
       window->GetRGBAPixelData(0, 0, reference.Width - 1, reference.Height - 1, 0, pixels);
     }

@@ -19,6 +19,7 @@
 #include "vtkNew.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkVolumeCollection.h"
 
 #include <cmath>
 #include <cstdlib>
@@ -39,7 +40,8 @@ struct Bounds
 };
 
 // Asserted bounds: the goal where it is met, else the llvmpipe measurement
-// (docs/reference.md) plus a small margin. Every scene meets every goal today.
+// (docs/reference.md) plus a small margin. Every scene meets every goal today but the
+// volume slab's FLIP.
 const std::map<std::string, Bounds>& SceneBounds()
 {
   static const std::map<std::string, Bounds> bounds = {
@@ -49,6 +51,7 @@ const std::map<std::string, Bounds>& SceneBounds()
     { "glyphs", { 0.12, 0.12, 1.0, 0.10, 0.50 } },
     { "emissive", { 0.30, 0.30, 1.0, 0.10, 0.50 } },
     { "streamlines", { 0.12, 0.12, 1.0, 0.10, 0.50 } },
+    { "volume", { 0.12, 0.16, 1.0, 0.10, 0.50 } }, // measured FLIP 0.149
   };
   return bounds;
 }
@@ -116,8 +119,19 @@ int TestGIReference(int argc, char* argv[])
   window->Render();
   VOXELGI_CHECK(gi->GetGIActive(), "GI did not run");
   VOXELGI_CHECK(voxelgi_test::AllFinite(gi), "non-finite values");
+  // VTK draws volumes over the composite: where the scene has one, the window's image is what
+  // the reference shows.
+  const bool volumes = renderer->GetVolumes()->GetNumberOfItems() > 0;
+  auto image = [&](vtkFloatArray* pixels) {
+    if (volumes)
+    {
+      window->GetRGBAPixelData(0, 0, w - 1, h - 1, 0, pixels);
+      return true;
+    }
+    return gi->GetFloatImage(vtkVoxelGIPass::IMAGE_COMPOSITE, pixels);
+  };
   vtkNew<vtkFloatArray> giPixels;
-  VOXELGI_CHECK(gi->GetFloatImage(vtkVoxelGIPass::IMAGE_COMPOSITE, giPixels), "no image");
+  VOXELGI_CHECK(image(giPixels), "no image");
   const Score withGI = Measure(giPixels, reference, "voxel GI (defaults)");
 
   bool ok = Within(scene + ", FLIP", withGI.Errors.Flip, bounds.FlipGoal, bounds.Flip);
@@ -134,7 +148,7 @@ int TestGIReference(int argc, char* argv[])
   gi->SetSoftwareProfileToOn();
   window->Render();
   VOXELGI_CHECK(gi->GetGIActive() && voxelgi_test::AllFinite(gi), "software profile");
-  VOXELGI_CHECK(gi->GetFloatImage(vtkVoxelGIPass::IMAGE_COMPOSITE, giPixels), "no image");
+  VOXELGI_CHECK(image(giPixels), "no image");
   const Score software = Measure(giPixels, reference, "voxel GI (software profile)");
   ok = Within(scene + ", software profile's FLIP relative to plain VTK's",
          software.Errors.Flip / plain.Errors.Flip, 1.0, 1.0) &&

@@ -2,9 +2,9 @@
 //
 //   TestSceneFile CASE     (CTest runs each as VoxelGI::SceneFile.CASE)
 //
-// SCENE (cornell, glossy, isosurface, glyphs, emissive, streamlines): the built-in scene,
-// written and read back into a second renderer, renders the same GI image (the description
-// holds everything the pass sees). User: a scene built as a program would (a sphere on a
+// SCENE (cornell, glossy, isosurface, glyphs, emissive, streamlines, volume): the built-in
+// scene, written and read back into a second renderer, renders the same GI image (the
+// description holds everything the pass sees). User: a scene built as a program would (a sphere on a
 // dataset-mapped ground, a scalar-coloured surface, a headlight, a light kit's
 // camera light, a text overlay) is written with notes for the headlight, the camera light and
 // the overlay, and reads back to the same image. Refused: a scene using what Cycles cannot
@@ -265,7 +265,7 @@ int Refused()
          "prop 1 (vtkOpenGLActor): wireframe or points representation", "prop 2 (vtkOpenGLActor): textured",
          "prop 3 (vtkOpenGLActor): ambient term that is not the background's sky light",
          "prop 4 (vtkOpenGLActor): lines or vertices", "prop 5 (vtkOpenGLActor): mapper vtkOpenGLGlyph3DMapper",
-         "prop 6 (vtkVolume): not an actor", "light 0: spot light",
+         "prop 6 (vtkVolume): a volume other than axis-aligned image data", "light 0: spot light",
          "light 1: attenuated point light", "camera: parallel projection",
          "background: gradient or textured" })
   {

@@ -2,22 +2,29 @@
 
 #include "vtkVoxelGIPass.h"
 
+#include "vtkAbstractVolumeMapper.h"
 #include "vtkActor.h"
 #include "vtkActor2D.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
+#include "vtkColorTransferFunction.h"
 #include "vtkCompositeDataSet.h"
+#include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkGeometryFilter.h"
+#include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationDoubleVectorKey.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkMapper.h"
+#include "vtkMatrix3x3.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLGPUVolumeRayCastMapper.h"
+#include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -25,13 +32,16 @@
 #include "vtkProp.h"
 #include "vtkPropCollection.h"
 #include "vtkProperty.h"
-#include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkRenderWindow.h"
 #include "vtkSmartPointer.h"
 #include "vtkTransform.h"
 #include "vtkTransformPolyDataFilter.h"
 #include "vtkTriangleFilter.h"
 #include "vtkUnsignedCharArray.h"
+#include "vtkVolume.h"
+#include "vtkVolumeMapper.h"
+#include "vtkVolumeProperty.h"
 #include "vtk_jsoncpp.h"
 
 #include <algorithm>
@@ -290,6 +300,77 @@ Json::Value Material(vtkActor* actor, bool colored, const std::string& normals)
 }
 
 // The light as a scene light for the current camera, or a problem.
+/// A homogeneous volume (constant opacity and colour over its scalars) as Cycles' extinction:
+/// VTK's opacity alpha per unit distance u is the density -ln(1 - alpha) / u per world unit.
+/// Empty with `problem` when the volume is anything else.
+Json::Value HomogeneousVolume(vtkVolume* volume, std::string& problem, std::string& note)
+{
+  vtkAbstractVolumeMapper* mapper = volume->GetMapper();
+  auto* image = mapper ? vtkImageData::SafeDownCast(mapper->GetDataSetInput()) : nullptr;
+  int cellFlag = 0;
+  vtkDataArray* scalars = image ? vtkAbstractMapper::GetScalars(image, mapper->GetScalarMode(),
+                                    mapper->GetArrayAccessMode(), mapper->GetArrayId(),
+                                    mapper->GetArrayName(), cellFlag)
+                                : nullptr;
+  auto* rayCast = vtkVolumeMapper::SafeDownCast(mapper);
+  vtkVolumeProperty* property = volume->GetProperty();
+  if (!scalars || cellFlag || scalars->GetNumberOfComponents() != 1 ||
+    !image->GetDirectionMatrix()->IsIdentity())
+  {
+    problem = "a volume other than axis-aligned image data with one point scalar";
+  }
+  else if ((rayCast && rayCast->GetBlendMode() != vtkVolumeMapper::COMPOSITE_BLEND) ||
+    property->GetShade() || property->GetColorChannels() != 3)
+  {
+    problem = "a shaded, grey or non-composite volume (VTK's own volume lighting)";
+  }
+  if (!problem.empty())
+  {
+    return Json::Value();
+  }
+  double range[2];
+  scalars->GetRange(range);
+  vtkPiecewiseFunction* opacity = property->GetScalarOpacity();
+  vtkColorTransferFunction* color = property->GetRGBTransferFunction();
+  const double alpha = opacity->GetValue(range[0]);
+  double rgb[3];
+  color->GetColor(range[0], rgb);
+  for (int i = 0; i <= 16; ++i)
+  {
+    const double s = range[0] + (range[1] - range[0]) * i / 16.0;
+    double c[3];
+    color->GetColor(s, c);
+    if (std::abs(opacity->GetValue(s) - alpha) > 1e-9 || std::abs(c[0] - rgb[0]) > 1e-9 ||
+      std::abs(c[1] - rgb[1]) > 1e-9 || std::abs(c[2] - rgb[2]) > 1e-9)
+    {
+      problem = "transfer functions that vary over the data (only homogeneous volumes)";
+      return Json::Value();
+    }
+  }
+  const double unit = property->GetScalarOpacityUnitDistance();
+  if (!(alpha > 0.0 && alpha < 1.0 && unit > 0.0))
+  {
+    problem = "opacity 0 or 1 per unit distance (no finite density)";
+    return Json::Value();
+  }
+  if (rgb[0] > 0.0 || rgb[1] > 0.0 || rgb[2] > 0.0)
+  {
+    note = "a volume's colour: VTK shows it unlit (emission-absorption), Cycles scatters light "
+           "with it; only black volumes look alike";
+  }
+  Json::Value v;
+  v["bounds"] = ToJson(image->GetBounds(), 6);
+  Json::Value matrix(Json::arrayValue);
+  for (int i = 0; i < 16; ++i)
+  {
+    matrix.append(volume->GetMatrix()->GetElement(i / 4, i % 4));
+  }
+  v["matrix"] = matrix;
+  v["density"] = -std::log(1.0 - alpha) / unit;
+  v["color"] = ToJson(rgb);
+  return v;
+}
+
 Json::Value Light(vtkLight* light, vtkCamera* camera, std::string& problem, std::string& note)
 {
   Json::Value l;
@@ -483,6 +564,7 @@ bool vtkVoxelGISceneFile::Write(vtkRenderer* renderer)
     problem("background", "non-finite colour");
   }
   std::vector<Surface> surfaces;
+  Json::Value volumes(Json::arrayValue);
   vtkPropCollection* props = renderer->GetViewProps();
   vtkCollectionSimpleIterator it;
   props->InitTraversal(it);
@@ -501,9 +583,27 @@ bool vtkVoxelGISceneFile::Write(vtkRenderer* renderer)
       note("overlays (2D actors) are left out: Cycles renders the 3D scene only");
       continue;
     }
+    if (auto* volume = vtkVolume::SafeDownCast(prop))
+    {
+      std::string why, volumeNote;
+      Json::Value v = HomogeneousVolume(volume, why, volumeNote);
+      if (!why.empty())
+      {
+        problem(what, why);
+      }
+      else
+      {
+        volumes.append(v);
+      }
+      if (!volumeNote.empty())
+      {
+        note(volumeNote);
+      }
+      continue;
+    }
     if (!actor)
     {
-      problem(what, "not an actor (volumes, image slices and assemblies are not described)");
+      problem(what, "not an actor (image slices and assemblies are not described)");
       continue;
     }
     std::string why;
@@ -584,6 +684,10 @@ bool vtkVoxelGISceneFile::Write(vtkRenderer* renderer)
   cam["view_angle"] = camera->GetViewAngle();
   scene["background"] = ToJson(background);
   scene["lights"] = lights;
+  if (!volumes.empty())
+  {
+    scene["volumes"] = volumes;
+  }
   for (const Surface& s : surfaces)
   {
     scene["materials"][s.Name] = s.Material;
@@ -892,6 +996,57 @@ vtkSmartPointer<vtkActor> MaterialActor(
   return actor;
 }
 
+/// The volume a description's entry describes: constant scalars over its bounds through
+/// constant transfer functions of opacity 1 - exp(-density) per unit distance.
+vtkSmartPointer<vtkVolume> HomogeneousVolume(const Json::Value& v, const std::string& where)
+{
+  const Json::Value& bounds = Field(v, "bounds", where);
+  const Json::Value& matrix = Field(v, "matrix", where);
+  if (!bounds.isArray() || bounds.size() != 6 || !matrix.isArray() || matrix.size() != 16)
+  {
+    throw Damaged(where + ": bounds are not 6 numbers or the matrix not 16");
+  }
+  double b[6], m[16];
+  for (Json::ArrayIndex i = 0; i < 6; ++i)
+  {
+    b[i] = Number(bounds[i], where + ".bounds");
+  }
+  for (Json::ArrayIndex i = 0; i < 16; ++i)
+  {
+    m[i] = Number(matrix[i], where + ".matrix");
+  }
+  const double density = Number(Field(v, "density", where), where + ".density");
+  const Vec3 color = Vector(Field(v, "color", where), where + ".color");
+  if (!(density > 0.0) || !(b[0] < b[1] && b[2] < b[3] && b[4] < b[5]))
+  {
+    throw Damaged(where + ": no positive density or empty bounds");
+  }
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(2, 2, 2);
+  image->SetOrigin(b[0], b[2], b[4]);
+  image->SetSpacing(b[1] - b[0], b[3] - b[2], b[5] - b[4]);
+  image->AllocateScalars(VTK_FLOAT, 1);
+  static_cast<vtkFloatArray*>(image->GetPointData()->GetScalars())->FillValue(1.f);
+  vtkNew<vtkPiecewiseFunction> opacity;
+  opacity->AddPoint(0.0, 1.0 - std::exp(-density));
+  opacity->AddPoint(2.0, 1.0 - std::exp(-density));
+  vtkNew<vtkColorTransferFunction> colors;
+  colors->AddRGBPoint(0.0, color[0], color[1], color[2]);
+  colors->AddRGBPoint(2.0, color[0], color[1], color[2]);
+  vtkNew<vtkOpenGLGPUVolumeRayCastMapper> mapper;
+  mapper->SetInputData(image);
+  auto volume = vtkSmartPointer<vtkVolume>::New();
+  volume->SetMapper(mapper);
+  volume->GetProperty()->SetScalarOpacity(opacity);
+  volume->GetProperty()->SetColor(colors);
+  volume->GetProperty()->SetScalarOpacityUnitDistance(1.0);
+  volume->GetProperty()->SetInterpolationTypeToLinear();
+  vtkNew<vtkMatrix4x4> user;
+  user->DeepCopy(m);
+  volume->SetUserMatrix(user);
+  return volume;
+}
+
 vtkSmartPointer<vtkLight> SceneLight(const Json::Value& l, const std::string& where)
 {
   auto light = vtkSmartPointer<vtkLight>::New();
@@ -937,6 +1092,7 @@ bool vtkVoxelGISceneFile::Read(vtkRenderer* renderer)
   const std::string name = this->FileName ? this->FileName : "";
   std::vector<vtkSmartPointer<vtkActor>> actors;
   std::vector<vtkSmartPointer<vtkLight>> lights;
+  std::vector<vtkSmartPointer<vtkVolume>> volumes;
   Vec3 position, focal, up, background;
   double viewAngle = 0.0;
   int size[2];
@@ -973,6 +1129,11 @@ bool vtkVoxelGISceneFile::Read(vtkRenderer* renderer)
     {
       lights.push_back(SceneLight(lightList[i], "lights[" + std::to_string(i) + "]"));
     }
+    const Json::Value& volumeList = scene["volumes"]; // optional
+    for (Json::ArrayIndex i = 0; volumeList.isArray() && i < volumeList.size(); ++i)
+    {
+      volumes.push_back(HomogeneousVolume(volumeList[i], "volumes[" + std::to_string(i) + "]"));
+    }
     const Json::Value& cam = Field(scene, "camera", "the description");
     position = Vector(Field(cam, "position", "camera"), "camera.position");
     focal = Vector(Field(cam, "focal_point", "camera"), "camera.focal_point");
@@ -1003,6 +1164,10 @@ bool vtkVoxelGISceneFile::Read(vtkRenderer* renderer)
   for (vtkActor* actor : actors)
   {
     renderer->AddActor(actor);
+  }
+  for (vtkVolume* volume : volumes)
+  {
+    renderer->AddVolume(volume);
   }
   renderer->AutomaticLightCreationOff();
   for (vtkLight* light : lights)

@@ -6,7 +6,8 @@
  * The error study compares the pass with a path-traced reference; this class lets it do so for
  * any scene a program builds, not only vtkVoxelGIScenes'. Write() turns the renderer's visible
  * actors, lights and camera into FILE.json (camera, lights, background, image size and, per
- * actor, VTK's material and the terms Cycles renders: diffuse, specular, emission) and FILE.obj
+ * actor, VTK's material and the terms Cycles renders: diffuse, specular, emission; per
+ * homogeneous volume, its box, matrix, colour and density) and FILE.obj
  * + FILE.mtl (world-space polygons, normals and scalar colours as vertex colours, one material
  * per actor). Testing/Reference/render_cycles.py renders the description with Cycles; Read()
  * rebuilds the same actors, lights and camera in a renderer, as VoxelGIErrorStudy does for a
@@ -15,8 +16,10 @@
  * Only what has the same meaning in both renderers is written. Write() refuses a scene that
  * uses anything else and names every such use in GetProblems(): translucent, textured, PBR,
  * unlit, wireframe or point props, lines and vertices, cell or field scalar colours, glyph and
- * composite mappers, volumes, image slices and other 3D props, spot lights, attenuated lights,
- * image-based lighting, gradient or textured backgrounds, parallel projection, and ambient
+ * composite mappers, volumes other than homogeneous ones (constant opacity and colour over
+ * axis-aligned image data, unshaded, composite), image slices and other 3D props, spot lights,
+ * attenuated lights, image-based lighting, gradient or textured backgrounds, parallel
+ * projection, and ambient
  * terms other than the background's sky light (Ka Ca = background x diffuse colour). Camera
  * lights and headlights are written as the scene lights they are for the current camera,
  * marked so that Read() makes them follow the camera again, and overlays (2D actors) are left

@@ -4,38 +4,45 @@
 
 #include "vtkActor.h"
 #include "vtkAssignAttribute.h"
-#include "vtkDataArray.h"
-#include "vtkDataSetAttributes.h"
-#include "vtkImageData.h"
-#include "vtkLineSource.h"
-#include "vtkStreamTracer.h"
-#include "vtkTriangleFilter.h"
-#include "vtkTubeFilter.h"
 #include "vtkCamera.h"
+#include "vtkColorTransferFunction.h"
 #include "vtkContourFilter.h"
 #include "vtkCubeSource.h"
+#include "vtkDataArray.h"
+#include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
 #include "vtkElevationFilter.h"
+#include "vtkFloatArray.h"
 #include "vtkGlyph3D.h"
+#include "vtkImageData.h"
 #include "vtkLight.h"
+#include "vtkLineSource.h"
 #include "vtkLookupTable.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLGPUVolumeRayCastMapper.h"
+#include "vtkPiecewiseFunction.h"
 #include "vtkPlaneSource.h"
+#include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkPointData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
-#include "vtkRTAnalyticSource.h"
 #include "vtkRenderer.h"
+#include "vtkRTAnalyticSource.h"
 #include "vtkSphereSource.h"
+#include "vtkStreamTracer.h"
 #include "vtkTransform.h"
 #include "vtkTransformPolyDataFilter.h"
+#include "vtkTriangleFilter.h"
+#include "vtkTubeFilter.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
 
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <vector>
 
 vtkStandardNewMacro(vtkVoxelGIScenes);
 
@@ -388,6 +395,65 @@ void vtkVoxelGIScenes::AddStreamlines(vtkRenderer* renderer)
   AimCamera(renderer, { 14.0, 9.0, 26.0 }, { 0.0, -1.0, 0.0 });
 }
 
+void vtkVoxelGIScenes::AddVolumeSlab(vtkRenderer* renderer)
+{
+  if (!renderer)
+  {
+    return;
+  }
+  const double sky = 0.3; // as the glyph field's: the ambient terms are the sky's light
+  renderer->SetBackground(sky, sky, sky);
+  std::vector<vtkActor*> actors;
+  actors.push_back(
+    AddQuad(renderer, { -8, 0, -8 }, { -8, 0, 8 }, { 8, 0, -8 }, { 0.7, 0.7, 0.7 }));
+  vtkNew<vtkCubeSource> box;
+  box->SetBounds(-3.5, -1.5, 0.0, 2.0, -1.0, 1.0);
+  actors.push_back(AddSource(renderer, box, 0.3, 0.5, 0.9));
+  vtkNew<vtkSphereSource> ball;
+  ball->SetCenter(2.0, 1.2, 1.5);
+  ball->SetRadius(1.2);
+  ball->SetThetaResolution(48);
+  ball->SetPhiResolution(48);
+  actors.push_back(AddSource(renderer, ball, 0.9, 0.5, 0.2));
+  for (vtkActor* actor : actors)
+  {
+    actor->GetProperty()->SetAmbient(sky);
+  }
+
+  // The slab: constant scalars through constant transfer functions, opacity 0.6 per unit.
+  vtkNew<vtkImageData> slab;
+  slab->SetDimensions(2, 2, 2);
+  slab->SetOrigin(-4.0, 3.5, -3.0);
+  slab->SetSpacing(8.0, 1.0, 6.0);
+  slab->AllocateScalars(VTK_FLOAT, 1);
+  static_cast<vtkFloatArray*>(slab->GetPointData()->GetScalars())->FillValue(1.f);
+  vtkNew<vtkPiecewiseFunction> opacity;
+  opacity->AddPoint(0.0, 0.6);
+  opacity->AddPoint(2.0, 0.6);
+  vtkNew<vtkColorTransferFunction> black;
+  black->AddRGBPoint(0.0, 0.0, 0.0, 0.0);
+  black->AddRGBPoint(2.0, 0.0, 0.0, 0.0);
+  // The OpenGL ray caster itself: no object factory needed to make it.
+  vtkNew<vtkOpenGLGPUVolumeRayCastMapper> mapper;
+  mapper->SetInputData(slab);
+  vtkNew<vtkVolume> volume;
+  volume->SetMapper(mapper);
+  volume->GetProperty()->SetScalarOpacity(opacity);
+  volume->GetProperty()->SetColor(black);
+  volume->GetProperty()->SetScalarOpacityUnitDistance(1.0);
+  volume->GetProperty()->SetInterpolationTypeToLinear();
+  renderer->AddVolume(volume);
+
+  vtkNew<vtkLight> sun;
+  sun->SetLightTypeToSceneLight();
+  sun->SetPositional(false);
+  sun->SetPosition(-6.0, 8.0, -5.0);
+  sun->SetFocalPoint(0.0, 0.0, 0.0);
+  sun->SetIntensity(1.0);
+  renderer->AddLight(sun);
+  AimCamera(renderer, { 10.0, 11.0, 15.0 }, { 0.0, 1.0, 0.0 });
+}
+
 bool vtkVoxelGIScenes::AddScene(vtkRenderer* renderer, const char* name)
 {
   if (!renderer || !name)
@@ -417,6 +483,10 @@ bool vtkVoxelGIScenes::AddScene(vtkRenderer* renderer, const char* name)
   else if (!std::strcmp(name, "streamlines"))
   {
     AddStreamlines(renderer);
+  }
+  else if (!std::strcmp(name, "volume"))
+  {
+    AddVolumeSlab(renderer);
   }
   else
   {

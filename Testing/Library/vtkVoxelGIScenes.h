@@ -46,10 +46,16 @@ public:
   static void AddGlyphField(vtkRenderer* renderer);
   static void AddEmissiveBox(vtkRenderer* renderer);
   static void AddStreamlines(vtkRenderer* renderer);
+  /**
+   * A black, absorbing homogeneous volume (a slab of opacity 0.6 per unit length, GPU ray
+   * cast) floating over a floor with a box and a sphere, under a sun and a sky: its shadow
+   * and the occlusion it adds are what the reference and the pass must agree on.
+   */
+  static void AddVolumeSlab(vtkRenderer* renderer);
 
   /**
-   * Add the scene called `name`: "cornell", "glossy", "isosurface", "glyphs", "emissive" or
-   * "streamlines". Returns false (and adds nothing) for another name.
+   * Add the scene called `name`: "cornell", "glossy", "isosurface", "glyphs", "emissive",
+   * "streamlines" or "volume". Returns false (and adds nothing) for another name.
    */
   static bool AddScene(vtkRenderer* renderer, const char* name);
 

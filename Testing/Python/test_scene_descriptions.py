@@ -28,7 +28,7 @@ def numbers_close(a, b):
 
 
 failures = []
-for scene in ("cornell", "glossy", "isosurface", "glyphs", "emissive", "streamlines"):
+for scene in ("cornell", "glossy", "isosurface", "glyphs", "emissive", "streamlines", "volume"):
     prefix = os.path.join(tmp, scene)
     subprocess.run([sys.executable, export, scene, prefix], check=True)
     with open(prefix + ".json") as f:

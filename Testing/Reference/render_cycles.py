@@ -23,6 +23,12 @@ Blinn-Phong highlight, and its lights do not fall off):
   4 pi^2 = 39.48.)
 - VTK directional light of intensity I -> sun of strength pi I (irradiance pi I cos(theta)),
   angle 0, for the same reason;
+- a homogeneous volume (VTK's opacity alpha per ScalarOpacityUnitDistance u, colour c) -> a box
+  of its bounds with no surface and a volume of extinction density -ln(1 - alpha) / u per
+  world unit: Volume Scatter (colour c) plus Volume Absorption (colour c), both of that
+  density, so that c of the extinction scatters and 1 - c is absorbed (the transmittance VTK's
+  compositing gives a ray, exp(-density x length)). VTK shows a volume's colour unlit, so only
+  black volumes look alike in both;
 - the renderer's background -> uniform world of that radiance. VTK's ambient term stands for
   that sky: export_scene.py accepts only Ka Ca = background x diffuse colour, which is what the
   unoccluded sky reflects (the world lights the scene in Cycles, occluded and bounced).
@@ -85,6 +91,32 @@ for obj in bpy.context.scene.objects:
         links.new(shader.outputs[0], output.inputs["Surface"])
 
 scene = bpy.context.scene
+for i, volume in enumerate(desc.get("volumes", [])):
+    lo, hi = Vector(volume["bounds"][0::2]), Vector(volume["bounds"][1::2])
+    bpy.ops.mesh.primitive_cube_add(size=2.0)
+    box = bpy.context.active_object
+    box.name = "volume%d" % i
+    m = volume["matrix"]
+    box.matrix_world = Matrix([m[0:4], m[4:8], m[8:12], m[12:16]]) @ \
+        Matrix.Translation((lo + hi) / 2) @ Matrix.Diagonal((*((hi - lo) / 2), 1.0))
+    material = bpy.data.materials.new("volume%d" % i)
+    material.use_nodes = True
+    material.cycles.homogeneous_volume = True
+    nodes = material.node_tree.nodes
+    links = material.node_tree.links
+    nodes.clear()
+    output = nodes.new("ShaderNodeOutputMaterial")
+    scatter = nodes.new("ShaderNodeVolumeScatter")
+    absorb = nodes.new("ShaderNodeVolumeAbsorption")
+    for node in (scatter, absorb):
+        node.inputs["Color"].default_value = (*volume["color"], 1.0)
+        node.inputs["Density"].default_value = volume["density"]
+    both = nodes.new("ShaderNodeAddShader")
+    links.new(scatter.outputs[0], both.inputs[0])
+    links.new(absorb.outputs[0], both.inputs[1])
+    links.new(both.outputs[0], output.inputs["Volume"])
+    box.data.materials.append(material)
+
 for i, light in enumerate(desc["lights"]):
     if light["type"] == "directional":
         data = bpy.data.lights.new("light%d" % i, "SUN")
@@ -135,6 +167,8 @@ scene.cycles.use_denoising = False
 scene.cycles.max_bounces = 8
 scene.cycles.diffuse_bounces = 8
 scene.cycles.glossy_bounces = 8
+scene.cycles.volume_bounces = 8
+scene.cycles.transparent_max_bounces = 8
 scene.cycles.sample_clamp_direct = 0.0
 scene.cycles.sample_clamp_indirect = 0.0
 scene.render.resolution_x, scene.render.resolution_y = desc["size"]
