@@ -69,13 +69,18 @@ void main()
   float lit = 1.0;
   if (albedo.a > 0.0)
   {
-    vec3 n = texelFetch(voxelNormal, v, 0).xyz * 2.0 - 1.0;
+    vec4 normal = texelFetch(voxelNormal, v, 0);
+    vec3 n = normal.xyz * 2.0 - 1.0;
     vec3 p = vec3(v) + 0.5;
     vec3 radiance = hasEmission != 0 ? texelFetch(voxelEmission, v, 0).rgb : vec3(0.0);
     bool twoSided = voxelLightInfo.y != 0;
     // direct light reaching the winding's front (x) and back (y), and the back's unoccluded (z)
     vec3 arriving = vec3(0.0);
-    for (int l = 0; l < voxelLightInfo.x; ++l)
+    // A volume's voxel (no surface: normal alpha 0, voxel_resolve.comp) scatters none of the
+    // lights' direct light: VTK shows a volume unlit, and GI adds to it, and passes on, only
+    // the light the scene's surfaces send it.
+    int lights = normal.a > 0.0 ? voxelLightInfo.x : 0;
+    for (int l = 0; l < lights; ++l)
     {
       vec3 toLight;
       float distance;

@@ -1,7 +1,8 @@
 /**
  * VolumeVoxels: the renderer's volumes (vtkVolume on vtkImageData, one scalar component,
  * composite blending) resampled into the voxel grid (voxelize_volume.comp), so that they cast
- * soft shadows and ambient occlusion, stop indirect light and scatter it with their colour.
+ * soft shadows and ambient occlusion, stop indirect light and scatter it with their colour
+ * (not the lights' direct light: VTK shows volumes unlit, light_voxels.comp).
  * Each volume's scalars go through its colour and scalar-opacity transfer functions into a
  * grid-sized volume of partial occupancy (rgb colour, a the share of light a voxel stops,
  * from the opacity per ScalarOpacityUnitDistance), which the resolve merges into the voxels

@@ -1,7 +1,8 @@
 """ParaView plugin test (pvpython, builtin session, under Xvfb):
 loads the plugin, creates the "Render View (Voxel GI)", shows a contour of the Wavelet source
 over a floor, sets view properties, renders and compares the screenshot with a baseline
-through vtkTesting; then checks that every setting of the settings table is a property of
+through vtkTesting; checks that an outline says nothing and that a Volume representation takes
+part in GI; then checks that every setting of the settings table is a property of
 the view and reaches the pass, and that a power-of-two setting offers only powers of two.
 
     pvpython test_plugin.py PLUGIN SETTINGS_JSON BASELINE OUTPUT_DIR
@@ -69,6 +70,16 @@ if GetDisplayProperties(wavelet, view).Representation != "Outline":
     failures.append("the Wavelet is not shown as an outline")
 if "voxel GI" in captured.GetOutput():
     failures.append("showing an outline said: " + captured.GetOutput())
+
+# The Volume representation (a vtkVolume on the image data) takes part in GI: no notice
+# leaves it to VTK, and GI runs.
+captured = vtkStringOutputWindow()
+vtkOutputWindow.SetInstance(captured)
+GetDisplayProperties(wavelet, view).SetRepresentationType("Volume")
+Render(view)
+vtkOutputWindow.SetInstance(previous)
+if "without voxel GI" in captured.GetOutput() or not pass_value("GIActive"):
+    failures.append("the Volume representation is left out: " + captured.GetOutput())
 Hide(wavelet, view)
 
 # every setting of the table is a view property that reaches the pass, and hides in the
