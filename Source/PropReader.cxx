@@ -1,6 +1,7 @@
 #include "PropReader.h"
 
 #include "ImageSliceProxies.h"
+#include "ImposterProxies.h"
 #include "PropKeys.h"
 #include "VolumeVoxels.h"
 
@@ -124,7 +125,10 @@ std::string LeftOutReason(vtkProp* prop)
     return std::string(prop->GetClassName()) + " with a " + mapper->GetClassName() +
       " (imposter spheres or sticks, no triangles)";
   }
-  const char* noArea = NoAreaReason(actor->GetProperty(), mapper->GetInputDataObject(0, 0));
+  // Points drawn as spheres are voxelized as spheres (ImposterProxies).
+  const char* noArea = ImposterProxies::Applies(actor)
+    ? nullptr
+    : NoAreaReason(actor->GetProperty(), mapper->GetInputDataObject(0, 0));
   if (noArea)
   {
     return std::string(prop->GetClassName()) + " (" + noArea + ")";

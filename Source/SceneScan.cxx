@@ -196,6 +196,7 @@ bool SceneScan::Collect(vtkRenderer* renderer, bool inRender, bool distributed,
   vtkMath::UninitializeBounds(bounds);
   std::map<std::string, int> leftOut; // visible 3D props VTK renders without GI, by reason
   std::set<vtkProp*> slices;          // image slices voxelized through proxies
+  std::set<vtkProp*> imposters;       // points drawn as spheres, likewise
   bool anySpecular = false;
   vtkPropCollection* props = renderer->GetViewProps();
   this->PropSignatures.clear();
@@ -238,6 +239,7 @@ bool SceneScan::Collect(vtkRenderer* renderer, bool inRender, bool distributed,
     }
     // An image slice is voxelized through its proxy: a textured quad.
     vtkActor* actor = vtkActor::SafeDownCast(prop);
+    vtkMTimeType recordSignature = signature;
     if (auto* slice = vtkImageSlice::SafeDownCast(prop))
     {
       std::string why;
@@ -249,13 +251,27 @@ bool SceneScan::Collect(vtkRenderer* renderer, bool inRender, bool distributed,
         continue;
       }
     }
+    else if (actor && ImposterProxies::Applies(actor))
+    {
+      std::string why;
+      actor = this->Imposters.Update(actor, signature, renderer, why);
+      imposters.insert(prop);
+      if (!actor)
+      {
+        ++leftOut[why];
+        continue;
+      }
+      b = actor->GetBounds(); // the spheres, not only their centres
+      recordSignature = std::max(signature, actor->GetMTime()); // a zoom rebuilds the proxy
+    }
     records.push_back(MakeRecord(
-      prop, actor, signature, reading.InputTime, previous(actor), warnings));
+      prop, actor, recordSignature, reading.InputTime, previous(actor), warnings));
     Merge(bounds, b, records.size() == 1 && volumes.empty());
     anySpecular = anySpecular || actor->GetProperty()->GetSpecular() > 0.0;
   }
   this->Reader.End();
   this->Slices.Retain(slices);
+  this->Imposters.Retain(imposters);
   this->ReportLeftOut(leftOut, warnings);
   this->AnySpecular = anySpecular;
   return !records.empty() || !volumes.empty();

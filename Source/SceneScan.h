@@ -11,6 +11,7 @@
 #define VoxelGISceneScan_h
 
 #include "ImageSliceProxies.h"
+#include "ImposterProxies.h"
 #include "PropKeys.h"
 #include "PropReader.h"
 #include "VolumeVoxels.h"
@@ -118,6 +119,7 @@ private:
   bool Due(const Settings& settings, bool settingsChanged, bool pending);
 
   ImageSliceProxies Slices; // image slices as textured quads
+  ImposterProxies Imposters; // points drawn as spheres, as glyphed spheres
   PropReader Reader;        // what was read of each view prop, kept between frames
   std::vector<ActorRecord> Records;
   std::vector<ActorRecord> Pending; // scanned, waiting for Accept()

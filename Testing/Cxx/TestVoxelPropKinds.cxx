@@ -11,13 +11,14 @@
 // surface with edges were black): the voxels keep the surface's red; case "composite": the
 // same drawn by a vtkCompositePolyDataMapper2 from a multiblock, as that VTK test; case
 // "tubes": the same sphere as a plain actor next to a line drawn as a tube
-// (RenderLinesAsTubes), whose voxelization shader once failed to compile and crashed; case "spheres": next to a point
-// cloud drawn as spheres (RenderPointsAsSpheres, as vedo's Points); case "widget": next to
+// (RenderLinesAsTubes), whose voxelization shader once failed to compile and crashed; case
+// "spheres": next to a point cloud drawn as spheres (RenderPointsAsSpheres, as vedo's
+// Points), voxelized as the spheres it shows, in its colour; case "widget": next to
 // an implicit plane widget (a cutter's), left to VTK: an unchanged frame only presents,
 // moving the plane draws again. The voxel at the
 // sphere's side holds its colour; the voxel where the sphere would be without its position
-// is empty. Tubes and point spheres (imposters, no triangles) are left to VTK, named in the
-// notice, and leave their voxels empty.
+// is empty. Tubes (imposters, no triangles) are left to VTK, named in the notice, and leave
+// their voxels empty.
 #include "VoxelGITestUtilities.h"
 #include "vtkVoxelGIPass.h"
 #include "vtkVoxelGIScenes.h"
@@ -201,16 +202,22 @@ int TestVoxelPropKinds(int argc, char* argv[])
   VOXELGI_CHECK(side[0] > 200 && side[1] < 60 && side[2] < 60, which << ": not the sphere's red");
   const double* unmoved = voxel(0.29, 0.5, 0.0);
   VOXELGI_CHECK(unmoved[3] == 0, which << ": voxels where the sphere is without its position");
-  const std::map<std::string, std::string> named = { { "tubes", "lines drawn as tubes" },
-    { "spheres", "points drawn as spheres" } };
-  if (named.count(which))
+  if (which == "tubes")
   {
     std::cout << which << ": " << log.Text << std::endl;
-    VOXELGI_CHECK(log.Has("vtkOpenGLActor (" + named.at(which) + ": imposters, no triangles)"),
+    VOXELGI_CHECK(log.Has("vtkOpenGLActor (lines drawn as tubes: imposters, no triangles)"),
       which << ": not named in the notice");
-    const double* imposters = voxel(which == "tubes" ? 0.0 : -1.0, which == "tubes" ? 0.4 : 0.8,
-      which == "tubes" ? -1.0 : 0.0);
-    VOXELGI_CHECK(imposters[3] == 0, which << ": voxels where the imposters are");
+    VOXELGI_CHECK(voxel(0.0, 0.4, -1.0)[3] == 0, which << ": voxels where the imposters are");
+  }
+  else if (which == "spheres")
+  {
+    // The cloud's middle, 0.3 across, is full of spheres.
+    const double* cloud = voxel(-1.0, 0.8, 0.0);
+    std::cout << which << ": voxel in the cloud " << cloud[0] << " " << cloud[1] << " "
+              << cloud[2] << " " << cloud[3] << "; said: " << log.Text << std::endl;
+    VOXELGI_CHECK(log.Text.empty(), which << ": " << log.Text);
+    VOXELGI_CHECK(cloud[3] == 255 && cloud[2] > 150 && cloud[0] < 100,
+      which << ": the spheres are not voxelized in their blue");
   }
   else
   {

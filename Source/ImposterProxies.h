@@ -1,0 +1,58 @@
+/**
+ * ImposterProxies: points VTK draws as spheres (vtkProperty::RenderPointsAsSpheres: vedo's and
+ * PyVista's point clouds) voxelized as the spheres they show. VTK draws each point as a
+ * shaded sprite of the point size in pixels, with no triangles to voxelize; for each such
+ * actor a proxy actor glyphs a sphere at every point (vtkGlyph3DMapper, the actor's colouring,
+ * property and matrix), of the radius the sprites show in world units at the actor's distance
+ * from the camera, so that the voxelization, the shadow maps and the scan treat the cloud as
+ * any glyphed actor. The proxy is rebuilt when the actor, its mapper or input changed, or
+ * when that radius moved by more than a quarter (a zoom; camera moves within that keep the
+ * voxels). GL-free.
+ */
+#ifndef VoxelGIImposterProxies_h
+#define VoxelGIImposterProxies_h
+
+#include "vtkSmartPointer.h" // for vtkSmartPointer
+#include "vtkType.h"         // for vtkMTimeType
+
+#include <set>
+#include <string>
+#include <unordered_map>
+
+class vtkActor;
+class vtkProp;
+class vtkRenderer;
+
+namespace voxelgi
+{
+
+class ImposterProxies
+{
+public:
+  /// Whether `actor` draws the points of a polydata input as spheres (and nothing else).
+  static bool Applies(vtkActor* actor);
+  /// The world radius of the spheres `actor`'s points show in `renderer` now: half the point
+  /// size in pixels at the distance of the actor's centre from the camera.
+  static double WorldRadius(vtkActor* actor, vtkRenderer* renderer);
+  /// The up-to-date proxy of `actor` (Applies()) whose signature the scan found, or null
+  /// with `reason` when its input has no points.
+  vtkActor* Update(vtkActor* actor, vtkMTimeType signature, vtkRenderer* renderer,
+    std::string& reason);
+  /// Drop the proxies of actors not in `kept`.
+  void Retain(const std::set<vtkProp*>& kept);
+
+private:
+  struct Proxy
+  {
+    vtkSmartPointer<vtkActor> Actor;
+    vtkMTimeType Synced = 0;
+    double Radius = 0.0;
+  };
+  static void Build(vtkActor* actor, vtkActor* proxy, double radius);
+
+  std::unordered_map<vtkActor*, Proxy> Proxies;
+};
+
+}
+
+#endif
