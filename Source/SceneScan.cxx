@@ -168,35 +168,51 @@ ActorRecord MakeRecord(vtkProp* prop, vtkActor* actor, vtkMTimeType signature,
 }
 }
 
+namespace
+{
+/// An actor's last record: scenes keep their order from frame to frame, so it is looked for
+/// at the actor's position first, and in an index of the records only when it moved.
+class PreviousRecords
+{
+public:
+  explicit PreviousRecords(const std::vector<ActorRecord>& records)
+    : Records(records)
+  {
+  }
+  /// The last record of `actor`, now the `at`-th (null: new).
+  const ActorRecord* Find(vtkActor* actor, std::size_t at)
+  {
+    if (at < this->Records.size() && this->Records[at].Actor == actor)
+    {
+      return &this->Records[at];
+    }
+    if (this->Index.empty())
+    {
+      for (const ActorRecord& record : this->Records)
+      {
+        this->Index[record.Actor] = &record;
+      }
+    }
+    const auto found = this->Index.find(actor);
+    return found != this->Index.end() ? found->second : nullptr;
+  }
+
+private:
+  const std::vector<ActorRecord>& Records;
+  std::unordered_map<vtkActor*, const ActorRecord*> Index;
+};
+}
+
 bool SceneScan::Collect(vtkRenderer* renderer, bool inRender, bool distributed,
   std::vector<ActorRecord>& records, std::vector<VolumeRecord>& volumes, double bounds[6],
   std::vector<std::string>& warnings)
 {
   // Every visible opaque surface actor drawn by a polydata mapper, including the ones outside
   // the view frustum (they still cast and reflect light).
-  // An actor's last record: scenes keep their order from frame to frame, so it is looked for
-  // at the actor's position first, and in an index of the records only when it moved.
-  std::unordered_map<vtkActor*, const ActorRecord*> index;
-  auto previous = [&](vtkActor* actor) -> const ActorRecord* {
-    const std::size_t at = records.size();
-    if (at < this->Records.size() && this->Records[at].Actor == actor)
-    {
-      return &this->Records[at];
-    }
-    if (index.empty())
-    {
-      for (const ActorRecord& record : this->Records)
-      {
-        index[record.Actor] = &record;
-      }
-    }
-    const auto found = index.find(actor);
-    return found != index.end() ? found->second : nullptr;
-  };
+  PreviousRecords previous(this->Records);
   vtkMath::UninitializeBounds(bounds);
   std::map<std::string, int> leftOut; // visible 3D props VTK renders without GI, by reason
-  std::set<vtkProp*> slices;          // image slices voxelized through proxies
-  std::set<vtkProp*> imposters;       // points drawn as spheres, likewise
+  std::set<vtkProp*> proxied;         // image slices and point sprites voxelized as proxies
   bool anySpecular = false;
   vtkPropCollection* props = renderer->GetViewProps();
   this->PropSignatures.clear();
@@ -237,44 +253,50 @@ bool SceneScan::Collect(vtkRenderer* renderer, bool inRender, bool distributed,
       Merge(bounds, b, records.empty() && volumes.size() == 1);
       continue;
     }
-    // An image slice is voxelized through its proxy: a textured quad.
-    vtkActor* actor = vtkActor::SafeDownCast(prop);
+    std::string why;
     vtkMTimeType recordSignature = signature;
-    if (auto* slice = vtkImageSlice::SafeDownCast(prop))
+    vtkActor* actor = this->StandIn(prop, renderer, b, recordSignature, why, proxied);
+    if (!actor)
     {
-      std::string why;
-      actor = this->Slices.Update(slice, signature, why);
-      slices.insert(slice);
-      if (!actor)
-      {
-        ++leftOut[why];
-        continue;
-      }
-    }
-    else if (actor && ImposterProxies::Applies(actor))
-    {
-      std::string why;
-      actor = this->Imposters.Update(actor, signature, renderer, why);
-      imposters.insert(prop);
-      if (!actor)
-      {
-        ++leftOut[why];
-        continue;
-      }
-      b = actor->GetBounds(); // the spheres, not only their centres
-      recordSignature = std::max(signature, actor->GetMTime()); // a zoom rebuilds the proxy
+      ++leftOut[why];
+      continue;
     }
     records.push_back(MakeRecord(
-      prop, actor, recordSignature, reading.InputTime, previous(actor), warnings));
+      prop, actor, recordSignature, reading.InputTime, previous.Find(actor, records.size()),
+      warnings));
     Merge(bounds, b, records.size() == 1 && volumes.empty());
     anySpecular = anySpecular || actor->GetProperty()->GetSpecular() > 0.0;
   }
   this->Reader.End();
-  this->Slices.Retain(slices);
-  this->Imposters.Retain(imposters);
+  this->Slices.Retain(proxied);
+  this->Imposters.Retain(proxied);
   this->ReportLeftOut(leftOut, warnings);
   this->AnySpecular = anySpecular;
   return !records.empty() || !volumes.empty();
+}
+
+vtkActor* SceneScan::StandIn(vtkProp* prop, vtkRenderer* renderer, const double*& bounds,
+  vtkMTimeType& signature, std::string& why, std::set<vtkProp*>& proxied)
+{
+  vtkActor* actor = vtkActor::SafeDownCast(prop);
+  // An image slice is voxelized through its proxy: a textured quad.
+  if (auto* slice = vtkImageSlice::SafeDownCast(prop))
+  {
+    proxied.insert(prop);
+    return this->Slices.Update(slice, signature, why);
+  }
+  if (!actor || !ImposterProxies::Applies(actor))
+  {
+    return actor;
+  }
+  proxied.insert(prop);
+  vtkActor* proxy = this->Imposters.Update(actor, signature, renderer, why);
+  if (proxy)
+  {
+    bounds = proxy->GetBounds(); // the spheres, not only their centres
+    signature = std::max(signature, proxy->GetMTime()); // a zoom rebuilds the proxy
+  }
+  return proxy;
 }
 
 void SceneScan::ReportLeftOut(

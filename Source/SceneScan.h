@@ -23,6 +23,7 @@
 #include <array>
 #include <cstddef>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -111,6 +112,12 @@ private:
   bool Collect(vtkRenderer* renderer, bool inRender, bool distributed,
     std::vector<ActorRecord>& records, std::vector<VolumeRecord>& volumes, double bounds[6],
     std::vector<std::string>& warnings);
+  /// The actor voxelized for `prop` (with `bounds` and `signature` as read): the prop, or the
+  /// proxy that stands in for an image slice or for points drawn as spheres (then the proxy's
+  /// bounds, and the signature raised to its last rebuild); null with `why` when that proxy
+  /// cannot be made. Props with proxies go into `proxied`.
+  vtkActor* StandIn(vtkProp* prop, vtkRenderer* renderer, const double*& bounds,
+    vtkMTimeType& signature, std::string& why, std::set<vtkProp*>& proxied);
   /// Warn once about each new kind of prop left to VTK (`leftOut`: reason -> count).
   void ReportLeftOut(const std::map<std::string, int>& leftOut, std::vector<std::string>& warnings);
   /// Compare with the accepted records: full rebuild, dynamic change, or nothing.
