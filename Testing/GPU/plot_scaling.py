@@ -1,8 +1,10 @@
 #!/usr/bin/python3
 """Plot the scaling benchmark (run_scaling_benchmark.sh): full-dynamic frame cost against the
 number of actors and against the number of triangles, with plain VTK's frame of the same run.
+With --voxelization, the sweep of run_scale_benchmark.sh instead: voxelization time and frame
+against triangles, by compute and through VTK's mappers (the JSON's ComputeVoxelization).
 
-Usage: plot_scaling.py OUT.png FILE.json [FILE.json ...]
+Usage: plot_scaling.py [--voxelization] OUT.png FILE.json [FILE.json ...]
 """
 import json
 import sys
@@ -36,11 +38,38 @@ def series(runs, scene, resolution, key, sequence):
     return [p[0] for p in points], [p[1] for p in points]
 
 
+def plot_voxelization(out, runs):
+    fig, ax = plt.subplots(figsize=(7, 4.8))
+    for compute, path, colour in ((1, "compute", "C0"), (0, "VTK's mappers", "C3")):
+        chosen = sorted((r for r in runs if r["settings"].get("ComputeVoxelization") == compute),
+                        key=lambda r: r["triangles"])
+        x = [r["triangles"] for r in chosen]
+        for key, style, name in (("Voxelize", "-", "voxelization (GPU)"), ("frame", "--", "GI frame")):
+            ax.plot(x, [value(r["median_ms"]["all-moving"], key) for r in chosen], style,
+                    marker="o", color=colour, label=f"{name}, {path}")
+        if compute:
+            ax.plot(x, [r["median_ms"]["plain"]["frame"] for r in chosen], ":", marker="o",
+                    color="k", label="plain VTK frame")
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("triangles (one sphere that moves every frame), 128³ voxels")
+    ax.set_ylabel("ms per frame (median)")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8)
+    ax.set_title(f"Voxelization against triangles, 1920×1080, {runs[0]['renderer']}", fontsize=9)
+    fig.tight_layout()
+    fig.savefig(out, dpi=110)
+    return 0
+
+
 def main():
-    if len(sys.argv) < 3:
+    args = [a for a in sys.argv[1:] if a != "--voxelization"]
+    if len(args) < 2:
         print(__doc__)
         return 2
-    runs = load(sys.argv[2:])
+    runs = load(args[1:])
+    if "--voxelization" in sys.argv:
+        return plot_voxelization(args[0], runs)
     resolutions = sorted({r["resolution"] for r in runs})
     machine = runs[0]["renderer"]
     fig, axes = plt.subplots(1, 2, figsize=(12, 4.8))
@@ -67,7 +96,7 @@ def main():
     axes[1].legend(fontsize=7, ncol=2)
     fig.suptitle(f"Full-dynamic frames, 1920×1080, {machine}")
     fig.tight_layout()
-    fig.savefig(sys.argv[1], dpi=110)
+    fig.savefig(args[0], dpi=110)
     return 0
 
 

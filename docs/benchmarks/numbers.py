@@ -27,6 +27,7 @@ SEQUENCES = [  # (name in the JSON, what it measures, its plain VTK baseline)
     ("one-moving", "one actor moves", "plain"),
     ("all-moving", "every actor moves", "plain"),
     ("new-data", "new data every frame", "plain-new-data"),
+    ("transfer-function", "a volume's transfer function changes", "plain"),
 ]
 MACHINES = {"h200": "NVIDIA H200", "h100": "NVIDIA H100", "llvmpipe": "llvmpipe, 2 cores"}
 
