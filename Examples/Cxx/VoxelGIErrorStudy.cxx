@@ -13,8 +13,9 @@
 //
 //   VoxelGIErrorStudy [--egl] SCENE REFERENCE.pfm OUT.csv [frames]
 //
-// SCENE: cornell, glossy, isosurface, glyphs, emissive, streamlines or volume
-// (vtkVoxelGIScenes::AddScene), or a description FILE.json (Testing/Reference/study_scene.sh
+// SCENE: a name vtkVoxelGIScenes::AddScene knows (cornell, glossy, isosurface, glyphs, emissive,
+// streamlines, volume, pointroom, lamproom, emitterroom, contacts, contactsheadlight), or a
+// description FILE.json (Testing/Reference/study_scene.sh
 // renders its reference and runs this). --egl renders headless through EGL
 // (vtkVoxelGIEGLRenderWindow), as on a GPU machine without X.
 #include "ImageMetrics.h"

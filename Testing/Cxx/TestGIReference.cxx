@@ -4,9 +4,9 @@
 //   TestGIReference SCENE     (CTest runs each as VoxelGI::Reference.SCENE)
 //
 // Renders plain VTK and the pass at its defaults at the reference's size and prints RMSE,
-// relMSE, SSIM, FLIP and the mean radiance of both. The goals (FLIP at most 0.30 in closed
-// rooms and 0.12 in open scenes and below plain VTK's, mean radiance within 10 % of the
-// reference, RMSE at most half of plain VTK's) are printed as met or "GOAL NOT MET"; where
+// relMSE, SSIM, FLIP and the mean radiance of both. The goals (FLIP at most 0.20 in closed
+// rooms and 0.12 in open scenes and at most 0.6 of plain VTK's, mean radiance within 10 % of
+// the reference, RMSE at most half of plain VTK's) are printed as met or "GOAL NOT MET"; where
 // they are not met the test asserts the bound the pass meets today (docs/reference.md lists
 // the numbers), so that nothing gets worse unnoticed. The software profile
 // (vtkVoxelGIPass::SoftwareProfile) is measured too: its FLIP must stay below plain VTK's.
@@ -21,6 +21,7 @@
 #include "vtkRenderer.h"
 #include "vtkVolumeCollection.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -32,28 +33,105 @@ namespace
 using voxelgi_test::Within;
 struct Bounds
 {
-  double FlipGoal;  // FLIP goal of the scene
+  double FlipGoal;  // FLIP goal of the scene: 0.20 in closed rooms, 0.12 in open scenes
   double Flip;      // FLIP asserted today
-  double FlipRatio; // FLIP / plain VTK's FLIP asserted today (goal 1: closer than VTK)
+  double FlipRatio; // FLIP / plain VTK's FLIP asserted today (goal 0.6)
   double Mean;      // |mean / reference mean - 1| asserted today (goal 0.1)
   double RmseRatio; // RMSE / plain VTK's RMSE asserted today (goal 0.5)
 };
 
 // Asserted bounds: the goal where it is met, else the llvmpipe measurement
-// (docs/reference.md) plus a small margin. Every scene meets every goal today but the
-// volume slab's FLIP.
+// (docs/reference.md) plus a small margin.
 const std::map<std::string, Bounds>& SceneBounds()
 {
   static const std::map<std::string, Bounds> bounds = {
-    { "cornell", { 0.30, 0.30, 1.0, 0.10, 0.50 } },
-    { "glossy", { 0.30, 0.30, 1.0, 0.10, 0.50 } },
-    { "isosurface", { 0.30, 0.30, 1.0, 0.10, 0.50 } },
-    { "glyphs", { 0.12, 0.12, 1.0, 0.10, 0.50 } },
-    { "emissive", { 0.30, 0.30, 1.0, 0.10, 0.50 } },
-    { "streamlines", { 0.12, 0.12, 1.0, 0.10, 0.50 } },
-    { "volume", { 0.12, 0.16, 1.0, 0.10, 0.50 } }, // measured FLIP 0.149
+    { "cornell", { 0.20, 0.20, 0.6, 0.10, 0.50 } },
+    { "glossy", { 0.20, 0.20, 0.6, 0.10, 0.50 } },
+    { "isosurface", { 0.20, 0.26, 0.6, 0.10, 0.50 } }, // measured FLIP 0.247
+    { "glyphs", { 0.12, 0.12, 0.6, 0.10, 0.50 } },
+    { "emissive", { 0.20, 0.22, 0.6, 0.10, 0.50 } }, // measured FLIP 0.204
+    { "streamlines", { 0.12, 0.12, 0.6, 0.10, 0.50 } },
+    { "volume", { 0.12, 0.16, 0.6, 0.10, 0.50 } }, // measured FLIP 0.149
+    // Scenes nobody tuned the pass to (issue 36).
+    { "pointroom", { 0.20, 0.27, 0.6, 0.16, 0.50 } },   // measured FLIP 0.253, mean -14.5 %
+    { "lamproom", { 0.20, 0.20, 0.6, 0.15, 0.50 } },    // measured mean -13.0 %
+    { "emitterroom", { 0.20, 0.31, 0.6, 0.24, 0.50 } }, // measured FLIP 0.286, mean +21 %
+    { "contacts", { 0.12, 0.12, 0.6, 0.10, 0.50 } },
+    { "contactsheadlight", { 0.12, 0.12, 0.6, 0.10, 0.66 } }, // measured RMSE ratio 0.62
   };
   return bounds;
+}
+
+// The contact scenes (vtkVoxelGIScenes::AddContacts): the floor just in front of the three
+// spheres' contacts against the open floor, and the floor-wall seam against the faces it
+// joins, as the mean of 3 x 3 pixels around each point's projection.
+struct Contacts
+{
+  double Ring = 0.0;      // floor 0.1 in front of the contacts
+  double OpenFloor = 0.0; // floor far from every object
+  double Seam = 0.0;      // the brighter of the floor and the wall next to the seam
+  double Faces = 0.0;     // the brighter of the floor and the wall 0.25-0.3 from the seam
+};
+
+Contacts ProbeContacts(const voxelgi::metrics::Image& image, vtkRenderer* renderer)
+{
+  auto at = [&](double x, double y, double z) {
+    renderer->SetWorldPoint(x, y, z, 1.0);
+    renderer->WorldToDisplay();
+    const double* d = renderer->GetDisplayPoint();
+    const int px = static_cast<int>(std::lround(d[0] - 0.5));
+    const int py = static_cast<int>(std::lround(d[1] - 0.5));
+    double sum = 0.0;
+    for (int j = py - 1; j <= py + 1; ++j)
+    {
+      for (int i = px - 1; i <= px + 1; ++i)
+      {
+        for (int c = 0; c < 3; ++c)
+        {
+          sum += image.Rgb[3 * (static_cast<size_t>(j) * image.Width + i) + c];
+        }
+      }
+    }
+    return sum / 27.0;
+  };
+  Contacts c;
+  for (int i = 0; i < 3; ++i)
+  {
+    c.Ring += at(-0.6 + 1.2 * i, 0.0, 0.7) / 3.0;
+  }
+  for (double x : { -3.0, -1.5, 0.0 })
+  {
+    c.OpenFloor += at(x, 0.0, 3.5) / 3.0;
+  }
+  c.Seam = std::max(at(-1.9, 0.0, -2.95), at(-1.9, 0.05, -3.0));
+  c.Faces = std::max(at(-1.9, 0.0, -2.75), at(-1.9, 0.3, -3.0));
+  return c;
+}
+
+// Contacts darken where the reference darkens them (the ring's ratio to the open floor within
+// 0.1 of the reference's), and no seam is brighter than both faces it joins. `seamExcess`:
+// the seam's excess asserted today.
+bool ContactsHold(const std::string& scene, vtkRenderer* renderer,
+  const voxelgi::metrics::Image& image, const voxelgi::metrics::Image& reference,
+  double seamExcess)
+{
+  const Contacts gi = ProbeContacts(image, renderer);
+  const Contacts truth = ProbeContacts(reference, renderer);
+  const double ratio = gi.Ring / gi.OpenFloor, truthRatio = truth.Ring / truth.OpenFloor;
+  std::cout << scene << ": contact ring / open floor " << ratio << " (reference " << truthRatio
+            << "); seam " << gi.Seam << ", faces " << gi.Faces << " (reference " << truth.Seam
+            << ", " << truth.Faces << ")\n";
+  bool ok = Within(scene + ", contact ring / open floor off the reference's",
+    std::abs(ratio - truthRatio), 0.1, 0.1);
+  if (truthRatio < 1.0)
+  {
+    ok = Within(scene + ", contact ring / open floor (darker, as in the reference)", ratio, 1.0,
+           1.0) &&
+      ok;
+  }
+  return Within(scene + ", seam above the brighter face it joins", gi.Seam - gi.Faces, 0.0,
+           seamExcess) &&
+    ok;
 }
 
 struct Score
@@ -136,7 +214,7 @@ int TestGIReference(int argc, char* argv[])
 
   bool ok = Within(scene + ", FLIP", withGI.Errors.Flip, bounds.FlipGoal, bounds.Flip);
   ok = Within(scene + ", FLIP relative to plain VTK's", withGI.Errors.Flip / plain.Errors.Flip,
-         1.0, bounds.FlipRatio) &&
+         0.6, bounds.FlipRatio) &&
     ok;
   ok = Within(scene + ", error of the mean radiance", std::abs(withGI.Mean / referenceMean - 1.0),
          0.1, bounds.Mean) &&
@@ -144,6 +222,17 @@ int TestGIReference(int argc, char* argv[])
   ok = Within(scene + ", RMSE relative to plain VTK's", withGI.Errors.Rmse / plain.Errors.Rmse,
          0.5, bounds.RmseRatio) &&
     ok;
+
+  if (scene.rfind("contacts", 0) == 0)
+  {
+    // Under the headlight the floor next to the spheres glows (measured: ring 1.47 against
+    // the reference's 1.39, the seam 0.064 above the wall) in the isotropic voxels' light.
+    const bool headlight = scene == "contactsheadlight";
+    ok = ContactsHold(scene, renderer,
+           voxelgi::metrics::FromRgba(giPixels->GetPointer(0), w, h), reference,
+           headlight ? 0.07 : 0.0) &&
+      ok;
+  }
 
   gi->SetSoftwareProfileToOn();
   window->Render();

@@ -428,9 +428,18 @@ Json::Value Light(vtkLight* light, vtkCamera* camera, std::string& problem, std:
   {
     problem = "spot light (cone angle " + std::to_string(light->GetConeAngle()) + ")";
   }
+  else if (attenuation[0] == 0.0 && attenuation[1] == 0.0 && attenuation[2] > 0.0)
+  {
+    // Inverse-square falloff, physical: I / (c2 d^2) is a point light of intensity I / c2.
+    l["type"] = "point";
+    l["falloff"] = "inverse_square";
+    l["intensity"] = intensity / attenuation[2];
+    l["position"] = ToJson(position.data());
+  }
   else if (attenuation[0] != 1.0 || attenuation[1] != 0.0 || attenuation[2] != 0.0)
   {
-    problem = "attenuated point light (only VTK's default attenuation 1, 0, 0 is described)";
+    problem = "attenuated point light (only VTK's default attenuation 1, 0, 0 and inverse "
+              "square 0, 0, c are described)";
   }
   else
   {
@@ -1066,6 +1075,15 @@ vtkSmartPointer<vtkLight> SceneLight(const Json::Value& l, const std::string& wh
     light->SetPositional(true);
     light->SetConeAngle(90.0);
     light->SetPosition(Vector(Field(l, "position", where), where + ".position").data());
+    const std::string falloff = l.get("falloff", "none").asString();
+    if (falloff == "inverse_square")
+    {
+      light->SetAttenuationValues(0.0, 0.0, 1.0);
+    }
+    else if (falloff != "none")
+    {
+      throw Damaged(where + ".falloff is neither none nor inverse_square");
+    }
   }
   else
   {

@@ -18,7 +18,7 @@
  * unlit, wireframe or point props, lines and vertices, cell or field scalar colours, glyph and
  * composite mappers, volumes other than homogeneous ones (constant opacity and colour over
  * axis-aligned image data, unshaded, composite), image slices and other 3D props, spot lights,
- * attenuated lights, image-based lighting, gradient or textured backgrounds, parallel
+ * attenuated lights other than inverse square, image-based lighting, gradient or textured backgrounds, parallel
  * projection, and ambient
  * terms other than the background's sky light (Ka Ca = background x diffuse colour). Camera
  * lights and headlights are written as the scene lights they are for the current camera,

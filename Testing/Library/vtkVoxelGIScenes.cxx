@@ -8,6 +8,7 @@
 #include "vtkColorTransferFunction.h"
 #include "vtkContourFilter.h"
 #include "vtkCubeSource.h"
+#include "vtkCylinderSource.h"
 #include "vtkDataArray.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
@@ -118,6 +119,35 @@ void AddPointLight(vtkRenderer* renderer, const Vec3& position, const Vec3& colo
   light->SetColor(color[0], color[1], color[2]);
   light->SetIntensity(intensity);
   renderer->AddLight(light);
+}
+
+// A box of the given bounds.
+vtkActor* AddBox(vtkRenderer* renderer, const Vec3& lo, const Vec3& hi, const Vec3& color)
+{
+  vtkNew<vtkCubeSource> cube;
+  cube->SetBounds(lo[0], hi[0], lo[1], hi[1], lo[2], hi[2]);
+  return vtkVoxelGIScenes::AddSource(renderer, cube, color[0], color[1], color[2]);
+}
+
+// AddRoom's five faces and the front wall behind the camera: a room closed on every side.
+vtkActor* AddClosedRoom(vtkRenderer* renderer, const Vec3& lo, const Vec3& hi, const Vec3& floor,
+  const Vec3& walls, const Vec3& left, const Vec3& right)
+{
+  vtkActor* floorActor = AddRoom(renderer, lo, hi, floor, walls, left, right);
+  AddQuad(renderer, { lo[0], lo[1], hi[2] }, { lo[0], hi[1], hi[2] }, { hi[0], lo[1], hi[2] },
+    walls);
+  renderer->AutomaticLightCreationOff();
+  return floorActor;
+}
+
+vtkActor* AddSphere(vtkRenderer* renderer, const Vec3& centre, double radius, const Vec3& color)
+{
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetCenter(centre[0], centre[1], centre[2]);
+  sphere->SetRadius(radius);
+  sphere->SetThetaResolution(48);
+  sphere->SetPhiResolution(32);
+  return vtkVoxelGIScenes::AddSource(renderer, sphere, color[0], color[1], color[2]);
 }
 
 void AimCamera(vtkRenderer* renderer, const Vec3& position, const Vec3& focalPoint)
@@ -454,6 +484,133 @@ void vtkVoxelGIScenes::AddVolumeSlab(vtkRenderer* renderer)
   AimCamera(renderer, { 10.0, 11.0, 15.0 }, { 0.0, 1.0, 0.0 });
 }
 
+void vtkVoxelGIScenes::AddPointLightRoom(vtkRenderer* renderer)
+{
+  if (!renderer)
+  {
+    return;
+  }
+  const Vec3 white{ { 0.7, 0.7, 0.7 } };
+  AddClosedRoom(renderer, { 0, 0, 0 }, { 10, 6, 10 }, { 0.4, 0.4, 0.4 }, white,
+    { 0.7, 0.12, 0.1 }, white);
+  AddBlock(renderer, 5.5, 4.0, 2.4, 1.0, 1.6, 0.0, { 0.55, 0.4, 0.25 });
+  // The wavelet's isosurface, coloured by height through a lookup table, resting on the table.
+  vtkNew<vtkRTAnalyticSource> wavelet;
+  vtkNew<vtkContourFilter> contour;
+  contour->SetInputConnection(wavelet->GetOutputPort());
+  contour->SetValue(0, 157.0);
+  contour->ComputeScalarsOff();
+  vtkNew<vtkTransform> place;
+  place->Translate(5.5, 1.0 + 0.06 * 10.0, 4.0);
+  place->Scale(0.06, 0.06, 0.06);
+  vtkNew<vtkTransformPolyDataFilter> moved;
+  moved->SetInputConnection(contour->GetOutputPort());
+  moved->SetTransform(place);
+  vtkNew<vtkElevationFilter> elevation;
+  elevation->SetInputConnection(moved->GetOutputPort());
+  elevation->SetLowPoint(0.0, 1.0, 0.0);
+  elevation->SetHighPoint(0.0, 2.2, 0.0);
+  vtkNew<vtkLookupTable> lut;
+  lut->SetHueRange(0.667, 0.0);
+  lut->SetTableRange(0.0, 1.0);
+  vtkActor* surface = AddSource(renderer, elevation, 1.0, 1.0, 1.0);
+  vtkPolyDataMapper* mapper = vtkPolyDataMapper::SafeDownCast(surface->GetMapper());
+  mapper->SetLookupTable(lut);
+  mapper->SetScalarRange(0.0, 1.0);
+  mapper->ScalarVisibilityOn();
+
+  vtkNew<vtkLight> lamp;
+  lamp->SetLightTypeToSceneLight();
+  lamp->SetPositional(true);
+  lamp->SetPosition(5.0, 5.2, 5.0);
+  lamp->SetFocalPoint(5.0, 0.0, 5.0);
+  lamp->SetConeAngle(90.0);
+  lamp->SetAttenuationValues(0.0, 0.0, 1.0);
+  lamp->SetColor(1.0, 0.95, 0.85);
+  lamp->SetIntensity(18.0);
+  renderer->AddLight(lamp);
+  AimCamera(renderer, { 5.0, 3.2, 9.6 }, { 4.0, 2.0, 0.0 });
+  renderer->GetActiveCamera()->SetViewAngle(60.0);
+  renderer->ResetCameraClippingRange();
+}
+
+void vtkVoxelGIScenes::AddLampRoom(vtkRenderer* renderer)
+{
+  if (!renderer)
+  {
+    return;
+  }
+  const Vec3 grey{ { 0.5, 0.5, 0.5 } };
+  AddClosedRoom(
+    renderer, { 0, 0, 0 }, { 4, 2.6, 5 }, { 0.55, 0.45, 0.35 }, grey, { 0.15, 0.25, 0.6 }, grey);
+  AddSphere(renderer, { 1.2, 0.5, 2.0 }, 0.5, { 0.7, 0.7, 0.7 });
+  AddBlock(renderer, 2.9, 1.5, 0.8, 1.2, 0.8, 30.0, { 0.8, 0.45, 0.15 });
+  AddPointLight(renderer, { 2.0, 2.3, 2.2 }, { 1.0, 0.95, 0.85 }, 0.5);
+  AimCamera(renderer, { 2.0, 1.4, 4.9 }, { 2.0, 0.9, 0.0 });
+  renderer->GetActiveCamera()->SetViewAngle(60.0);
+  renderer->ResetCameraClippingRange();
+}
+
+void vtkVoxelGIScenes::AddEmitterRoom(vtkRenderer* renderer)
+{
+  if (!renderer)
+  {
+    return;
+  }
+  const Vec3 white{ { 0.75, 0.75, 0.75 } };
+  AddClosedRoom(
+    renderer, { 0, 0, 0 }, { 5, 3, 6 }, { 0.6, 0.6, 0.6 }, white, white, { 0.2, 0.55, 0.2 });
+  // No vtkLight: a small emissive cube hanging in the room is the only light.
+  MakeEmitter(AddBox(renderer, { 2.35, 1.85, 2.85 }, { 2.65, 2.15, 3.15 }, white),
+    { 20.0, 18.0, 15.0 });
+  AddBlock(renderer, 1.2, 1.5, 1.0, 1.4, 1.0, -15.0, white);
+  AddSphere(renderer, { 3.6, 0.6, 2.5 }, 0.6, { 0.75, 0.6, 0.4 });
+  AimCamera(renderer, { 2.5, 1.6, 5.9 }, { 2.5, 1.0, 0.0 });
+  renderer->GetActiveCamera()->SetViewAngle(60.0);
+  renderer->ResetCameraClippingRange();
+}
+
+void vtkVoxelGIScenes::AddContacts(vtkRenderer* renderer, bool headlight)
+{
+  if (!renderer)
+  {
+    return;
+  }
+  const Vec3 grey{ { 0.7, 0.7, 0.7 } };
+  AddQuad(renderer, { -6, 0, -3 }, { -6, 0, 6 }, { 6, 0, -3 }, grey);
+  AddQuad(renderer, { -6, 0, -3 }, { 6, 0, -3 }, { -6, 5, -3 }, grey);
+  // A heat sink: eight thin fins on a base plate, gaps of two fin widths.
+  const Vec3 metal{ { 0.75, 0.75, 0.78 } };
+  AddBox(renderer, { -4.4, 0.0, -0.8 }, { -2.2, 0.3, 0.8 }, metal);
+  for (int i = 0; i < 8; ++i)
+  {
+    const double x = -4.35 + 0.28 * i;
+    AddBox(renderer, { x, 0.3, -0.8 }, { x + 0.09, 1.5, 0.8 }, metal);
+  }
+  // Three spheres touching each other and the floor.
+  for (int i = 0; i < 3; ++i)
+  {
+    AddSphere(renderer, { -0.6 + 1.2 * i, 0.6, 0.6 }, 0.6, { 0.8, 0.45, 0.2 });
+  }
+  // A column standing against the wall.
+  vtkNew<vtkCylinderSource> column;
+  column->SetCenter(3.6, 1.0, -2.6);
+  column->SetRadius(0.4);
+  column->SetHeight(2.0);
+  column->SetResolution(48);
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputConnection(column->GetOutputPort());
+  AddSource(renderer, triangles, 0.3, 0.45, 0.8);
+  AddBlock(renderer, 2.0, 2.5, 0.9, 0.9, 0.9, 35.0, grey);
+  if (!headlight)
+  {
+    AddPointLight(renderer, { -2.0, 6.0, 5.0 }, { 1.0, 1.0, 1.0 }, 0.9);
+  }
+  AimCamera(renderer, { 0.0, 5.0, 11.5 }, { -0.3, 0.8, -0.5 });
+  renderer->GetActiveCamera()->SetViewAngle(42.0);
+  renderer->ResetCameraClippingRange();
+}
+
 bool vtkVoxelGIScenes::AddScene(vtkRenderer* renderer, const char* name)
 {
   if (!renderer || !name)
@@ -487,6 +644,26 @@ bool vtkVoxelGIScenes::AddScene(vtkRenderer* renderer, const char* name)
   else if (!std::strcmp(name, "volume"))
   {
     AddVolumeSlab(renderer);
+  }
+  else if (!std::strcmp(name, "pointroom"))
+  {
+    AddPointLightRoom(renderer);
+  }
+  else if (!std::strcmp(name, "lamproom"))
+  {
+    AddLampRoom(renderer);
+  }
+  else if (!std::strcmp(name, "emitterroom"))
+  {
+    AddEmitterRoom(renderer);
+  }
+  else if (!std::strcmp(name, "contacts"))
+  {
+    AddContacts(renderer, false);
+  }
+  else if (!std::strcmp(name, "contactsheadlight"))
+  {
+    AddContacts(renderer, true);
   }
   else
   {

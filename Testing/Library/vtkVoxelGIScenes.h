@@ -54,8 +54,31 @@ public:
   static void AddVolumeSlab(vtkRenderer* renderer);
 
   /**
+   * Scenes nobody tuned the pass to. A closed 10 x 6 x 10 room (white walls, one red, a grey
+   * floor, a table with an isosurface coloured through a lookup table) under one point light
+   * of inverse-square attenuation ("pointroom").
+   */
+  static void AddPointLightRoom(vtkRenderer* renderer);
+  /**
+   * A small closed room of darker albedo (0.5, one blue wall) under a point light of VTK's
+   * default attenuation ("lamproom").
+   */
+  static void AddLampRoom(vtkRenderer* renderer);
+  /**
+   * A closed room lit only by a small emissive cube hanging in it ("emitterroom").
+   */
+  static void AddEmitterRoom(vtkRenderer* renderer);
+  /**
+   * Contacts: a floor against a wall with a finned heat sink, three touching spheres, a
+   * column against the wall and a block, under a point light ("contacts") or VTK's
+   * headlight ("contactsheadlight"). Seams, fins and touching points must darken.
+   */
+  static void AddContacts(vtkRenderer* renderer, bool headlight);
+
+  /**
    * Add the scene called `name`: "cornell", "glossy", "isosurface", "glyphs", "emissive",
-   * "streamlines" or "volume". Returns false (and adds nothing) for another name.
+   * "streamlines", "volume", "pointroom", "lamproom", "emitterroom", "contacts" or
+   * "contactsheadlight". Returns false (and adds nothing) for another name.
    */
   static bool AddScene(vtkRenderer* renderer, const char* name);
 

@@ -3,7 +3,7 @@ renderers read (vtkVoxelGISceneFile): OUT.json, OUT.obj and OUT.mtl, at 200 x 20
 
     python3 export_scene.py SCENE OUT_PREFIX     (build/lib/python3/dist-packages on PYTHONPATH)
 
-SCENE: cornell, glossy, isosurface, glyphs, emissive, streamlines or volume. A scene of your own:
+SCENE: a name vtkVoxelGIScenes.AddScene knows (cornell, glossy, ..., contactsheadlight). A scene of your own:
 vtkVoxelGISceneFile.Write(renderer) in your program, then study_scene.sh.
 """
 import sys

@@ -20,7 +20,8 @@ Blinn-Phong highlight, and its lights do not fall off):
   the Light Falloff node's constant output: irradiance pi I cos(theta) at every distance, so a
   surface of albedo rho reflects rho I cos(theta), VTK's value. (A direct-light-only render of
   the Cornell box matches VTK's own image to within 1 %: median ratio 39.50 against
-  4 pi^2 = 39.48.)
+  4 pi^2 = 39.48.) A point light of VTK's inverse-square attenuation (0, 0, c) is written with
+  intensity I / c and takes the node's quadratic output: irradiance pi I cos(theta) / (c d^2);
 - VTK directional light of intensity I -> sun of strength pi I (irradiance pi I cos(theta)),
   angle 0, for the same reason;
 - a homogeneous volume (VTK's opacity alpha per ScalarOpacityUnitDistance u, colour c) -> a box
@@ -133,7 +134,9 @@ for i, light in enumerate(desc["lights"]):
         data.use_nodes = True
         falloff = data.node_tree.nodes.new("ShaderNodeLightFalloff")
         falloff.inputs["Strength"].default_value = 1.0  # the light's power scales it
-        data.node_tree.links.new(falloff.outputs["Constant"],
+        # VTK's inverse-square attenuation is Cycles' own (quadratic) falloff
+        output = "Quadratic" if light.get("falloff") == "inverse_square" else "Constant"
+        data.node_tree.links.new(falloff.outputs[output],
                                  data.node_tree.nodes["Emission"].inputs["Strength"])
         obj = bpy.data.objects.new("light%d" % i, data)
         obj.location = light["position"]
