@@ -107,8 +107,9 @@ void MakeEmitter(vtkActor* actor, const Vec3& emission)
   vtkVoxelGIPass::SetPropEmission(actor, emission[0], emission[1], emission[2]);
 }
 
-// An unattenuated point light (VTK's default attenuation) at `position`.
-void AddPointLight(vtkRenderer* renderer, const Vec3& position, const Vec3& color, double intensity)
+// A point light of VTK's default attenuation (none) at `position`; the renderer owns it.
+vtkLight* AddPointLight(
+  vtkRenderer* renderer, const Vec3& position, const Vec3& color, double intensity)
 {
   vtkNew<vtkLight> light;
   light->SetLightTypeToSceneLight();
@@ -119,6 +120,7 @@ void AddPointLight(vtkRenderer* renderer, const Vec3& position, const Vec3& colo
   light->SetColor(color[0], color[1], color[2]);
   light->SetIntensity(intensity);
   renderer->AddLight(light);
+  return light;
 }
 
 // A box of the given bounds.
@@ -150,13 +152,40 @@ vtkActor* AddSphere(vtkRenderer* renderer, const Vec3& centre, double radius, co
   return vtkVoxelGIScenes::AddSource(renderer, sphere, color[0], color[1], color[2]);
 }
 
-void AimCamera(vtkRenderer* renderer, const Vec3& position, const Vec3& focalPoint)
+// VTK's wavelet contoured at RTData = 157 (over [-10, 10]^3), placed by `place` (none: as it
+// is), coloured by height from `low` to `high` (world y) through a blue-to-red lookup table.
+void AddWaveletIsosurface(vtkRenderer* renderer, vtkTransform* place, double low, double high)
+{
+  vtkNew<vtkRTAnalyticSource> wavelet;
+  vtkNew<vtkContourFilter> contour;
+  contour->SetInputConnection(wavelet->GetOutputPort());
+  contour->SetValue(0, 157.0);
+  contour->ComputeScalarsOff();
+  vtkNew<vtkTransformPolyDataFilter> moved;
+  moved->SetInputConnection(contour->GetOutputPort());
+  moved->SetTransform(place);
+  vtkNew<vtkElevationFilter> elevation;
+  elevation->SetInputConnection(place ? moved->GetOutputPort() : contour->GetOutputPort());
+  elevation->SetLowPoint(0.0, low, 0.0);
+  elevation->SetHighPoint(0.0, high, 0.0);
+  vtkNew<vtkLookupTable> lut;
+  lut->SetHueRange(0.667, 0.0);
+  lut->SetTableRange(0.0, 1.0);
+  vtkActor* surface = vtkVoxelGIScenes::AddSource(renderer, elevation, 1.0, 1.0, 1.0);
+  vtkPolyDataMapper* mapper = vtkPolyDataMapper::SafeDownCast(surface->GetMapper());
+  mapper->SetLookupTable(lut);
+  mapper->SetScalarRange(0.0, 1.0);
+  mapper->ScalarVisibilityOn();
+}
+
+void AimCamera(
+  vtkRenderer* renderer, const Vec3& position, const Vec3& focalPoint, double viewAngle = 30.0)
 {
   vtkCamera* camera = renderer->GetActiveCamera();
   camera->SetFocalPoint(focalPoint[0], focalPoint[1], focalPoint[2]);
   camera->SetPosition(position[0], position[1], position[2]);
   camera->SetViewUp(0.0, 1.0, 0.0);
-  camera->SetViewAngle(30.0);
+  camera->SetViewAngle(viewAngle);
   renderer->ResetCameraClippingRange();
 }
 }
@@ -224,12 +253,7 @@ void vtkVoxelGIScenes::AddGlossyRoom(vtkRenderer* renderer)
                 { 1.0, 1.0, 1.0 }),
     { 3.0, 1.5, 0.5 });
 
-  vtkNew<vtkSphereSource> sphere;
-  sphere->SetCenter(2.0, 0.9, 3.0);
-  sphere->SetRadius(0.9);
-  sphere->SetThetaResolution(48);
-  sphere->SetPhiResolution(32);
-  AddSource(renderer, sphere, 0.8, 0.8, 0.8);
+  AddSphere(renderer, { 2.0, 0.9, 3.0 }, 0.9, { 0.8, 0.8, 0.8 });
   AddBlock(renderer, 4.3, 2.2, 1.2, 1.6, 1.2, 25.0, { 0.7, 0.2, 0.2 });
 
   // A dim fill light behind the camera: its highlight on the floor is out of view.
@@ -243,24 +267,8 @@ void vtkVoxelGIScenes::AddIsosurfaceRoom(vtkRenderer* renderer)
   {
     return;
   }
-  // The wavelet's isosurface (RTData = 157 over [-10, 10]^3), coloured by height, in a room.
-  vtkNew<vtkRTAnalyticSource> wavelet;
-  vtkNew<vtkContourFilter> contour;
-  contour->SetInputConnection(wavelet->GetOutputPort());
-  contour->SetValue(0, 157.0);
-  contour->ComputeScalarsOff();
-  vtkNew<vtkElevationFilter> elevation;
-  elevation->SetInputConnection(contour->GetOutputPort());
-  elevation->SetLowPoint(0.0, -10.0, 0.0);
-  elevation->SetHighPoint(0.0, 10.0, 0.0);
-  vtkNew<vtkLookupTable> lut;
-  lut->SetHueRange(0.667, 0.0);
-  lut->SetTableRange(0.0, 1.0);
-  vtkActor* surface = AddSource(renderer, elevation, 1.0, 1.0, 1.0);
-  vtkPolyDataMapper* mapper = vtkPolyDataMapper::SafeDownCast(surface->GetMapper());
-  mapper->SetLookupTable(lut);
-  mapper->SetScalarRange(0.0, 1.0);
-  mapper->ScalarVisibilityOn();
+  // The wavelet's isosurface, coloured by height, in a room.
+  AddWaveletIsosurface(renderer, nullptr, -10.0, 10.0);
 
   AddRoom(renderer, { -16, -11, -16 }, { 16, 19, 16 }, { 0.75, 0.75, 0.75 },
     { 0.75, 0.75, 0.75 }, { 0.7, 0.7, 0.3 }, { 0.3, 0.6, 0.7 });
@@ -346,9 +354,7 @@ void vtkVoxelGIScenes::AddEmissiveBox(vtkRenderer* renderer)
   sphere->SetPhiResolution(24);
   AddSource(renderer, sphere, 0.75, 0.75, 0.75);
   renderer->AutomaticLightCreationOff();
-  AimCamera(renderer, { 0.5 * S, 0.6 * S, 0.97 * S }, { 0.5 * S, 0.28 * S, 0.0 });
-  renderer->GetActiveCamera()->SetViewAngle(60.0);
-  renderer->ResetCameraClippingRange();
+  AimCamera(renderer, { 0.5 * S, 0.6 * S, 0.97 * S }, { 0.5 * S, 0.28 * S, 0.0 }, 60.0);
 }
 
 void vtkVoxelGIScenes::AddStreamlines(vtkRenderer* renderer)
@@ -495,43 +501,14 @@ void vtkVoxelGIScenes::AddPointLightRoom(vtkRenderer* renderer)
     { 0.7, 0.12, 0.1 }, white);
   AddBlock(renderer, 5.5, 4.0, 2.4, 1.0, 1.6, 0.0, { 0.55, 0.4, 0.25 });
   // The wavelet's isosurface, coloured by height through a lookup table, resting on the table.
-  vtkNew<vtkRTAnalyticSource> wavelet;
-  vtkNew<vtkContourFilter> contour;
-  contour->SetInputConnection(wavelet->GetOutputPort());
-  contour->SetValue(0, 157.0);
-  contour->ComputeScalarsOff();
   vtkNew<vtkTransform> place;
   place->Translate(5.5, 1.0 + 0.06 * 10.0, 4.0);
   place->Scale(0.06, 0.06, 0.06);
-  vtkNew<vtkTransformPolyDataFilter> moved;
-  moved->SetInputConnection(contour->GetOutputPort());
-  moved->SetTransform(place);
-  vtkNew<vtkElevationFilter> elevation;
-  elevation->SetInputConnection(moved->GetOutputPort());
-  elevation->SetLowPoint(0.0, 1.0, 0.0);
-  elevation->SetHighPoint(0.0, 2.2, 0.0);
-  vtkNew<vtkLookupTable> lut;
-  lut->SetHueRange(0.667, 0.0);
-  lut->SetTableRange(0.0, 1.0);
-  vtkActor* surface = AddSource(renderer, elevation, 1.0, 1.0, 1.0);
-  vtkPolyDataMapper* mapper = vtkPolyDataMapper::SafeDownCast(surface->GetMapper());
-  mapper->SetLookupTable(lut);
-  mapper->SetScalarRange(0.0, 1.0);
-  mapper->ScalarVisibilityOn();
+  AddWaveletIsosurface(renderer, place, 1.0, 2.2);
 
-  vtkNew<vtkLight> lamp;
-  lamp->SetLightTypeToSceneLight();
-  lamp->SetPositional(true);
-  lamp->SetPosition(5.0, 5.2, 5.0);
-  lamp->SetFocalPoint(5.0, 0.0, 5.0);
-  lamp->SetConeAngle(90.0);
-  lamp->SetAttenuationValues(0.0, 0.0, 1.0);
-  lamp->SetColor(1.0, 0.95, 0.85);
-  lamp->SetIntensity(18.0);
-  renderer->AddLight(lamp);
-  AimCamera(renderer, { 5.0, 3.2, 9.6 }, { 4.0, 2.0, 0.0 });
-  renderer->GetActiveCamera()->SetViewAngle(60.0);
-  renderer->ResetCameraClippingRange();
+  AddPointLight(renderer, { 5.0, 5.2, 5.0 }, { 1.0, 0.95, 0.85 }, 18.0)
+    ->SetAttenuationValues(0.0, 0.0, 1.0);
+  AimCamera(renderer, { 5.0, 3.2, 9.6 }, { 4.0, 2.0, 0.0 }, 60.0);
 }
 
 void vtkVoxelGIScenes::AddLampRoom(vtkRenderer* renderer)
@@ -546,9 +523,7 @@ void vtkVoxelGIScenes::AddLampRoom(vtkRenderer* renderer)
   AddSphere(renderer, { 1.2, 0.5, 2.0 }, 0.5, { 0.7, 0.7, 0.7 });
   AddBlock(renderer, 2.9, 1.5, 0.8, 1.2, 0.8, 30.0, { 0.8, 0.45, 0.15 });
   AddPointLight(renderer, { 2.0, 2.3, 2.2 }, { 1.0, 0.95, 0.85 }, 0.5);
-  AimCamera(renderer, { 2.0, 1.4, 4.9 }, { 2.0, 0.9, 0.0 });
-  renderer->GetActiveCamera()->SetViewAngle(60.0);
-  renderer->ResetCameraClippingRange();
+  AimCamera(renderer, { 2.0, 1.4, 4.9 }, { 2.0, 0.9, 0.0 }, 60.0);
 }
 
 void vtkVoxelGIScenes::AddEmitterRoom(vtkRenderer* renderer)
@@ -565,9 +540,7 @@ void vtkVoxelGIScenes::AddEmitterRoom(vtkRenderer* renderer)
     { 20.0, 18.0, 15.0 });
   AddBlock(renderer, 1.2, 1.5, 1.0, 1.4, 1.0, -15.0, white);
   AddSphere(renderer, { 3.6, 0.6, 2.5 }, 0.6, { 0.75, 0.6, 0.4 });
-  AimCamera(renderer, { 2.5, 1.6, 5.9 }, { 2.5, 1.0, 0.0 });
-  renderer->GetActiveCamera()->SetViewAngle(60.0);
-  renderer->ResetCameraClippingRange();
+  AimCamera(renderer, { 2.5, 1.6, 5.9 }, { 2.5, 1.0, 0.0 }, 60.0);
 }
 
 void vtkVoxelGIScenes::AddContacts(vtkRenderer* renderer, bool headlight)
@@ -606,9 +579,7 @@ void vtkVoxelGIScenes::AddContacts(vtkRenderer* renderer, bool headlight)
   {
     AddPointLight(renderer, { -2.0, 6.0, 5.0 }, { 1.0, 1.0, 1.0 }, 0.9);
   }
-  AimCamera(renderer, { 0.0, 5.0, 11.5 }, { -0.3, 0.8, -0.5 });
-  renderer->GetActiveCamera()->SetViewAngle(42.0);
-  renderer->ResetCameraClippingRange();
+  AimCamera(renderer, { 0.0, 5.0, 11.5 }, { -0.3, 0.8, -0.5 }, 42.0);
 }
 
 bool vtkVoxelGIScenes::AddScene(vtkRenderer* renderer, const char* name)
