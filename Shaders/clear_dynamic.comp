@@ -33,7 +33,7 @@ void main()
   voxelEmissionR[i] = 0u;
   voxelEmissionG[i] = 0u;
   voxelEmissionB[i] = 0u;
-  voxelEmissionCount[i] = 0u;
+  voxelEmissionCoverage[i] = 0u;
 #endif
   if (clearStatic != 0)
   {

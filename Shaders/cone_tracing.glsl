@@ -36,6 +36,43 @@ vec4 voxelSampleCone(vec3 p, float diameter, vec3 dir)
   return mix(textureLod(voxelRadiance, uvw, 0.0), aniso, level);
 }
 
+// Whether the voxel holding grid point q is occupied (the radiance volume's alpha: its
+// occupancy, which no stage changes after the lighting).
+bool voxelOccupied(vec3 q)
+{
+  ivec3 v = clamp(ivec3(floor(q)), ivec3(0), ivec3(voxelResolution - 1));
+  return texelFetch(voxelRadiance, v, 0).a >= 0.5;
+}
+
+// The last sample of a cone that leaves the scene's bounds through a face across `axis`
+// (voxelConeTrace): read along that axis at q, centred in the texel of diameter d (the
+// cone's level) that holds the face's voxels. `open`: the face does not close the scene
+// there. A texel reaching back past the cone's origin would show what lies behind it (in a
+// flat scene, the floor at the top face), and one wider than the cone what lies beside it
+// (the top of a block): the face counts as closed only where the voxels at the exit point
+// and across the scene from it, on the opposite face, are occupied (a room's floor and
+// ceiling, not an open floor).
+void voxelSceneFaceRead(vec3 p, vec3 origin, vec3 dir, int axis, float diameter, out vec3 q,
+  out float d, out bool open)
+{
+  bool up = dir[axis] > 0.0;
+  vec3 inward = vec3(0.0);
+  inward[axis] = up ? -1.0 : 1.0;
+  float face = up ? voxelSceneHi[axis] - 0.5 : voxelSceneLo[axis] + 0.5;
+  float across = up ? voxelSceneLo[axis] + 0.5 : voxelSceneHi[axis] - 0.5;
+  d = exp2(max(floor(log2(diameter)), 1.0));
+  // (behind the origin: judged on the next level's texel, which the filtered read reaches)
+  float reach = floor(face / (2.0 * d)) * 2.0 * d;
+  vec3 exitPoint = p, oppositePoint = p;
+  exitPoint[axis] = face;
+  oppositePoint[axis] = across;
+  open = (up ? reach < origin[axis] : reach + 2.0 * d > origin[axis]) ||
+    !(voxelOccupied(exitPoint) || voxelOccupied(exitPoint + inward)) ||
+    !(voxelOccupied(oppositePoint) || voxelOccupied(oppositePoint - inward));
+  q = p;
+  q[axis] = (floor(face / d) + 0.5) * d;
+}
+
 // Front-to-back accumulation along a cone from `origin`, starting `start` voxels out:
 // returns radiance (rgb) and opacity (a); `occlusion` gets the opacity weighted down with
 // distance by `aoFalloff` (per voxel).
@@ -53,23 +90,35 @@ vec4 voxelConeTrace(vec3 origin, vec3 dir, float tanHalf, float start, float max
   float res = float(voxelResolution);
   float stepFactor = max(coneStepFactor, 0.05);
   float t = max(start, 0.5);
-  // Where the cone leaves the grid its last sample is taken, half a voxel inside: a step
-  // must not jump over the geometry between the last sample and the grid's boundary (in a
-  // closed room the walls lie there, and the cone would end short of full opacity: light
-  // lost). That sample stands for everything up to the boundary, so it is read along the
-  // axis the cone leaves through, whose directional mip holds the share of the footprint
-  // blocked before that face (read obliquely, the other axes' mips see only part of a
-  // one-voxel wall), and takes no step-length correction. Near an edge of the grid the axes
-  // whose faces lie within one footprint of the exit share the read, so that neighbouring
-  // cones leaving through different faces do not jump from one wall's colour to the
-  // other's. The step count is bounded whatever the settings: no endless loops.
+  // Where the cone leaves the grid, or the scene's bounds through a face that a wall closes
+  // (nothing lies beyond the bounds), its last sample is taken, half a voxel inside: a step
+  // must not jump over the geometry between the last sample and the boundary (in a closed
+  // room the walls lie there, and the cone would end short of full opacity: light lost).
+  // That sample stands for everything up to the boundary, so it is read along the axis the
+  // cone leaves through, whose directional mip holds the share of the footprint blocked
+  // before that face (read obliquely, the other axes' mips see only part of a one-voxel
+  // wall), and takes no step-length correction. At the scene's bounds it is centred on that
+  // axis in the texels holding the boundary's voxels (not blended with the empty ones
+  // beyond; voxelSceneFaceRead) and read along that axis alone (another axis' mip, read off
+  // its own texels' centres, sees part of the wall): a room lower than it is wide has its
+  // floor and ceiling deep inside the cubic grid. Where the face is open there, the cone goes
+  // on to the grid's face. At the grid's faces, near an edge the axes whose faces lie within
+  // one footprint of the exit share the read, so that neighbouring cones leaving through
+  // different faces do not jump from one wall's colour to the other's. The step count is
+  // bounded whatever the settings: no endless loops.
   vec3 safeDir = mix(dir, vec3(1e-6), lessThan(abs(dir), vec3(1e-6)));
-  vec3 exits = max(-origin / safeDir, (vec3(res) - origin) / safeDir);
+  vec3 gridExits = max(-origin / safeDir, (vec3(res) - origin) / safeDir);
+  vec3 exits = max((voxelSceneLo.xyz - origin) / safeDir, (voxelSceneHi.xyz - origin) / safeDir);
   float tExit = min(exits.x, min(exits.y, exits.z));
+  // (a cone that starts outside the scene's bounds goes to the grid's face, as before them)
+  bool sceneFace = tExit > t && tExit < min(gridExits.x, min(gridExits.y, gridExits.z));
+  exits = sceneFace ? exits : gridExits;
+  tExit = min(exits.x, min(exits.y, exits.z));
   float tEnd = min(maxDistance, tExit);
   bool last = false;
   for (int i = 0; i < 512 && !last && acc.a < 0.99; ++i)
   {
+    float tNext = t;
     if (t >= tEnd)
     {
       if (i == 0 || tEnd >= maxDistance)
@@ -104,14 +153,39 @@ vec4 voxelConeTrace(vec3 origin, vec3 dir, float tanHalf, float start, float max
     }
     diameter = max(diameter, 1.0);
     vec3 readDir = dir;
-    if (last)
+    bool open = false;
+    if (last && sceneFace)
+    {
+      int axis = exits.x == tExit ? 0 : (exits.y == tExit ? 1 : 2);
+      voxelSceneFaceRead(p, origin, dir, axis, diameter, p, diameter, open);
+      readDir = vec3(0.0);
+      readDir[axis] = sign(safeDir[axis]);
+    }
+    else if (last)
     {
       vec3 near = max(1.0 - (exits - tExit) / diameter, 0.0);
       readDir = sqrt(near / (near.x + near.y + near.z)) * sign(safeDir);
     }
+    // (one call site: the sampler selection inside is large, and so is its compiled code)
     vec4 s = voxelSampleCone(p, diameter, readDir);
-    // Opacity correction for steps shorter or longer than the sample's extent.
-    float a = last ? clamp(s.a, 0.0, 1.0) : 1.0 - pow(clamp(1.0 - s.a, 0.0, 1.0), stepFactor);
+    if (last && sceneFace && (open || s.a < 0.5))
+    {
+      // an open face: on to the grid's, as if the scene's bounds were not there
+      sceneFace = false;
+      last = false;
+      exits = gridExits;
+      tExit = min(exits.x, min(exits.y, exits.z));
+      tEnd = min(maxDistance, tExit);
+      t = tNext;
+      continue;
+    }
+    // Opacity correction for steps shorter or longer than the sample's extent. At the
+    // scene's bounds the last sample's opacity is the share of the footprint blocked up to
+    // the face, which the earlier samples' filters have partly seen already: it raises the
+    // cone's opacity to its own, never adds to it (an emitter at the face would count twice).
+    float a = !last ? 1.0 - pow(clamp(1.0 - s.a, 0.0, 1.0), stepFactor)
+                    : (sceneFace ? clamp((s.a - acc.a) / max(1.0 - acc.a, 1e-4), 0.0, 1.0)
+                                 : clamp(s.a, 0.0, 1.0));
     vec3 c = s.a > 1e-4 ? s.rgb * (a / s.a) : vec3(0.0);
     acc.rgb += (1.0 - acc.a) * c;
     acc.a += (1.0 - acc.a) * a;

@@ -6,9 +6,11 @@
 // instead of overflowing at 255 as a packed RGBA8 running average would. Emission is not
 // quantized: each channel keeps the largest radiance of the voxel's emitting fragments as
 // float bits (atomicMax orders non-negative floats' bits as the floats), and a fourth channel
-// counts the emitting fragments; the voxel emits that radiance times their share of its
-// fragments. Exact where one emitter covers the voxel, whatever its radiance relative to
-// others; where emitters of different radiance share a voxel the brighter one counts.
+// sums the emitting surfaces' coverage of the voxel (voxel_write.glsl), in 1/1024 units; the
+// voxel emits that radiance times its covered fraction, so the conservative fringe of an
+// emitter does not emit as if filled. Exact where one emitter covers the voxel, whatever its
+// radiance relative to others; where emitters of different radiance share a voxel the
+// brighter one counts.
 // One buffer per channel, bound at consecutive points in this order; separate blocks rather
 // than an array of blocks, which some compilers only index by literal constants.
 layout(std430, binding = 0) buffer VoxelCountBuffer { uint voxelCount[]; };
@@ -22,7 +24,7 @@ layout(std430, binding = 6) buffer VoxelNormalZBuffer { uint voxelNormalZ[]; };
 layout(std430, binding = 7) buffer VoxelEmissionRBuffer { uint voxelEmissionR[]; };
 layout(std430, binding = 8) buffer VoxelEmissionGBuffer { uint voxelEmissionG[]; };
 layout(std430, binding = 9) buffer VoxelEmissionBBuffer { uint voxelEmissionB[]; };
-layout(std430, binding = 10) buffer VoxelEmissionCountBuffer { uint voxelEmissionCount[]; };
+layout(std430, binding = 10) buffer VoxelEmissionCoverageBuffer { uint voxelEmissionCoverage[]; };
 #endif
 
 #include "voxel_grid.glsl"
@@ -37,6 +39,8 @@ uint voxelQuantize(float v)
 {
   return uint(clamp((isnan(v) || isinf(v)) ? 0.0 : v, 0.0, 1.0) * 255.0 + 0.5);
 }
+
+const float voxelCoverageScale = 1024.0;
 
 // Mean of three channel sums over `count` fragments.
 vec3 voxelMean(uint r, uint g, uint b, float count)

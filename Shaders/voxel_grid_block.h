@@ -11,6 +11,8 @@ VOXELGI_UNIFORM_BLOCK(VoxelGridBlock, VOXELGI_GRID_BLOCK_BINDING)
 {
   int voxelResolution; // voxels per axis
   float voxelSize;     // edge length of one voxel, world units
+  vec4 voxelSceneLo;   // the scene's bounds in grid coordinates, whole voxels (xyz): cones
+  vec4 voxelSceneHi;   // end at their faces, nothing lies beyond
 };
 
 VOXELGI_INTEROP_END

@@ -1,7 +1,8 @@
 // Turns the accumulated sums into the voxel volumes the later stages sample: mean albedo
-// (alpha = occupied), mean unit normal (zero where the normals cancel out) and mean emission;
-// and lists the occupied bricks (brick_list.glsl). With VOXELGI_VOLUMES, a voxel no surface
-// reached takes the volumes' colour and partial occupancy (voxelize_volume.comp), no normal.
+// (alpha = occupied), mean unit normal (zero where the normals cancel out) and the emission
+// of the voxel's covered fraction; and lists the occupied bricks (brick_list.glsl). With
+// VOXELGI_VOLUMES, a voxel no surface reached takes the volumes' colour and partial
+// occupancy (voxelize_volume.comp), no normal.
 layout(local_size_x = VOXELGI_LOCAL_SIZE, local_size_y = VOXELGI_LOCAL_SIZE, local_size_z = VOXELGI_LOCAL_SIZE) in;
 
 #include "voxel_common.glsl"
@@ -45,7 +46,7 @@ void main()
 #if VOXEL_CHANNELS > VOXELGI_BASE_CHANNELS
     vec3 brightest = vec3(uintBitsToFloat(voxelEmissionR[i]), uintBitsToFloat(voxelEmissionG[i]),
       uintBitsToFloat(voxelEmissionB[i]));
-    emission = brightest * (float(voxelEmissionCount[i]) / n);
+    emission = brightest * min(float(voxelEmissionCoverage[i]) / voxelCoverageScale, 1.0);
 #endif
   }
 #ifdef VOXELGI_VOLUMES

@@ -21,7 +21,32 @@ ivec3 voxelUnswizzle(ivec3 q, int axis)
   return axis == 0 ? q.zxy : (axis == 1 ? q.yzx : q);
 }
 
-void voxelStore(ivec3 v, vec4 color, vec3 faceNormal)
+// The fraction of the pixel square centred on c inside this edge's half plane: exact for
+// axis-aligned edges, linear in the edge function between the square's extremes otherwise.
+// Two triangles sharing the edge get fractions that sum to 1.
+float voxelEdgeCoverage(vec3 e, vec2 c)
+{
+  float reach = abs(e.x) + abs(e.y);
+  return clamp(0.5 - (dot(e.xy, c) + e.z) / reach, 0.0, 1.0);
+}
+
+// The share of the triangle's projected coverage in the voxel of depth k, from where the
+// plane's depth interval over the pixel square [lo, hi] meets [k, k + 1]. A plane along
+// the voxels' faces covers each voxel it lies in, both where it lies on their boundary (a
+// wall between two layers is seen from each side in the layer on that side).
+float voxelDepthShare(float lo, float hi, int k)
+{
+  if (hi - lo < 1e-4)
+  {
+    float z = 0.5 * (lo + hi);
+    return abs(clamp(z, float(k), float(k + 1)) - z) <= voxelEps ? 1.0 : 0.0;
+  }
+  return max(min(hi, float(k + 1)) - max(lo, float(k)), 0.0) / (hi - lo);
+}
+
+// `coverage`: the fraction of the voxel's cross-section along the triangle's projection axis
+// that the triangle covers; it weighs only emission (voxel_common.glsl).
+void voxelStore(ivec3 v, vec4 color, vec3 faceNormal, float coverage)
 {
   if (voxelStaticPass != 0)
   {
@@ -47,7 +72,7 @@ void voxelStore(ivec3 v, vec4 color, vec3 faceNormal)
     atomicMax(voxelEmissionR[i], floatBitsToUint(e.r));
     atomicMax(voxelEmissionG[i], floatBitsToUint(e.g));
     atomicMax(voxelEmissionB[i], floatBitsToUint(e.b));
-    atomicAdd(voxelEmissionCount[i], 1u);
+    atomicAdd(voxelEmissionCoverage[i], uint(coverage * voxelCoverageScale + 0.5));
   }
 #endif
 }
@@ -80,9 +105,17 @@ void voxelWriteColumn(VoxelTriangle t, vec2 c, vec4 color)
   }
   int k0 = max(int(floor(zlo)), 0);
   int k1 = min(int(floor(zhi)), voxelResolution - 1);
+  // Clipped to the triangle's bounds, so a sliver or a triangle smaller than the pixel does
+  // not count as covering it.
+  vec2 boxOverlap = max(min(c + 0.5, t.box.zw) - max(c - 0.5, t.box.xy), vec2(0.0));
+  float coverage = min(voxelEdgeCoverage(t.edge0, c) * voxelEdgeCoverage(t.edge1, c) *
+      voxelEdgeCoverage(t.edge2, c), boxOverlap.x * boxOverlap.y);
+  float depthLo = max(zc - dz, t.depthRange.x);
+  float depthHi = min(zc + dz, t.depthRange.y);
   // The dominant-axis projection bounds the depth slope by 1 per axis: at most 3 voxels.
   for (int k = k0; k <= k1 && k <= k0 + 3; ++k)
   {
-    voxelStore(voxelUnswizzle(ivec3(xy, k), t.axis), color, t.faceNormal);
+    voxelStore(voxelUnswizzle(ivec3(xy, k), t.axis), color, t.faceNormal,
+      coverage * voxelDepthShare(depthLo, depthHi, k));
   }
 }

@@ -457,6 +457,7 @@ bool SceneScan::Scan(vtkRenderer* renderer, const Settings& settings, Ranks& ran
   this->InvalidateRequested = false;
   this->FramesSinceUpdate = 0;
   update.Grid = this->BuiltGrid;
+  update.Grid.SetScene(bounds);
   if (refit &&
     FitVoxelGrid(bounds, settings.VoxelResolution, settings.GridPadding, update.Grid) !=
       FitStatus::Ok)

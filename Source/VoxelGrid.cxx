@@ -51,7 +51,28 @@ FitStatus FitVoxelGrid(const double bounds[6], int resolution, double padding, V
   grid.Resolution = resolution;
   grid.VoxelSize = size / resolution;
   grid.Origin = center - glm::dvec3(0.5 * size);
+  grid.SetScene(bounds);
   return FitStatus::Ok;
+}
+
+void VoxelGrid::SetScene(const double bounds[6])
+{
+  this->SceneLo = glm::dvec3(bounds[0], bounds[2], bounds[4]);
+  this->SceneHi = glm::dvec3(bounds[1], bounds[3], bounds[5]);
+}
+
+void VoxelGrid::SceneVoxels(glm::dvec3& lo, glm::dvec3& hi) const
+{
+  const glm::dvec3 all(this->Resolution);
+  lo = glm::dvec3(0.0);
+  hi = all;
+  if (!this->IsValid() || !(glm::all(glm::lessThanEqual(this->SceneLo, this->SceneHi))))
+  {
+    return;
+  }
+  // NaN-safe: a comparison that fails keeps the grid's face
+  lo = glm::clamp(glm::floor(this->ToVoxel(this->SceneLo)), glm::dvec3(0.0), all);
+  hi = glm::clamp(glm::ceil(this->ToVoxel(this->SceneHi)), lo, all);
 }
 
 int ClampResolution(int resolution, int minimum, int maximum)

@@ -17,6 +17,12 @@ struct VoxelGrid
   glm::dvec3 Origin{ 0.0 }; // world position of the grid's minimum corner
   double VoxelSize = 0.0;   // edge length of one voxel, world units
   int Resolution = 0;       // voxels per axis
+  /// The bounds of the scene the voxels hold (world; empty, lo > hi: unknown). Nothing lies
+  /// outside them, so cones end at their faces (cone_tracing.glsl) and not in the grid's
+  /// empty margins: a room lower than it is wide has its floor and ceiling deep inside the
+  /// cubic grid.
+  glm::dvec3 SceneLo{ 1.0 };
+  glm::dvec3 SceneHi{ 0.0 };
 
   bool IsValid() const { return this->Resolution > 0 && this->VoxelSize > 0.0; }
   double Size() const { return this->VoxelSize * this->Resolution; }
@@ -28,6 +34,11 @@ struct VoxelGrid
   }
   /// True when the bounds (xmin,xmax,ymin,ymax,zmin,zmax) lie inside the grid.
   bool Covers(const double bounds[6]) const;
+  /// Keep `bounds` (xmin,xmax,...) as the scene's (SceneLo, SceneHi).
+  void SetScene(const double bounds[6]);
+  /// The scene's bounds in voxel coordinates, whole voxels, within [0, Resolution]; the
+  /// whole grid when they are unknown.
+  void SceneVoxels(glm::dvec3& lo, glm::dvec3& hi) const;
 };
 
 /// Why a grid could not be fitted.
@@ -40,7 +51,7 @@ enum class FitStatus
 
 /**
  * Fit a grid around `bounds`: cubic voxels, the largest extent plus `padding` (a fraction of
- * that extent) on each side, centred on the bounds. Flat or zero-volume bounds still give a
+ * that extent) on each side, centred on the bounds, which it keeps as the scene's. Flat or zero-volume bounds still give a
  * valid grid: a zero extent falls back to a size relative to the coordinates' magnitude.
  */
 FitStatus FitVoxelGrid(const double bounds[6], int resolution, double padding, VoxelGrid& grid);

@@ -3,6 +3,8 @@
 #include "VoxelGrid.h"
 #include "shader_interface.h"
 
+#include <cstring>
+
 namespace voxelgi
 {
 
@@ -11,8 +13,14 @@ void VoxelGridBlock::Bind(const VoxelGrid& grid)
   Block block{};
   block.voxelResolution = grid.Resolution;
   block.voxelSize = static_cast<float>(grid.VoxelSize);
-  if (!this->Buffer.IsAllocated() || block.voxelResolution != this->Uploaded.voxelResolution ||
-    block.voxelSize != this->Uploaded.voxelSize)
+  glm::dvec3 lo, hi;
+  grid.SceneVoxels(lo, hi);
+  for (int a = 0; a < 3; ++a)
+  {
+    block.voxelSceneLo[a] = static_cast<float>(lo[a]);
+    block.voxelSceneHi[a] = static_cast<float>(hi[a]);
+  }
+  if (!this->Buffer.IsAllocated() || std::memcmp(&block, &this->Uploaded, sizeof(Block)) != 0)
   {
     if (!this->Buffer.IsAllocated())
     {

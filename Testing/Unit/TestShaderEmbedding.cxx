@@ -162,10 +162,12 @@ TEST(ShaderBlocks, TypesHaveStd140Sizes)
 
 TEST(ShaderBlocks, VoxelGridBlockIsStd140)
 {
-  // int at 0, float at 4 (base alignment 4 each); the block padded to a vec4's 16.
+  // int at 0, float at 4 (base alignment 4 each); the vec4s at the next multiples of 16.
   EXPECT_EQ(offsetof(VoxelGridBlock, voxelResolution), 0u);
   EXPECT_EQ(offsetof(VoxelGridBlock, voxelSize), 4u);
-  EXPECT_EQ(sizeof(VoxelGridBlock), 16u);
+  EXPECT_EQ(offsetof(VoxelGridBlock, voxelSceneLo), 16u);
+  EXPECT_EQ(offsetof(VoxelGridBlock, voxelSceneHi), 32u);
+  EXPECT_EQ(sizeof(VoxelGridBlock), 48u);
 }
 
 TEST(ShaderBlocks, VoxelLightBlockIsStd140)

@@ -27,6 +27,39 @@ TEST(VoxelGrid, FitsCubeAroundBoxWithPadding)
   EXPECT_FALSE(grid.Covers(outside));
 }
 
+TEST(VoxelGrid, SceneBoundsInWholeVoxels)
+{
+  // a room 10 x 6 x 10 in a grid of 11: the floor and ceiling lie 2.5 units inside the grid
+  const double bounds[6] = { 0, 10, 0, 6, 0, 10 };
+  VoxelGrid grid;
+  ASSERT_EQ(FitVoxelGrid(bounds, 128, 0.05, grid), FitStatus::Ok);
+  glm::dvec3 lo, hi;
+  grid.SceneVoxels(lo, hi);
+  // x: 0.5 / (11 / 128) = 5.82 -> 5, 10.5 / (11 / 128) = 122.18 -> 123
+  EXPECT_DOUBLE_EQ(lo.x, 5.0);
+  EXPECT_DOUBLE_EQ(hi.x, 123.0);
+  // y: 2.5 / (11 / 128) = 29.09 -> 29, 8.5 / (11 / 128) = 98.9 -> 99
+  EXPECT_DOUBLE_EQ(lo.y, 29.0);
+  EXPECT_DOUBLE_EQ(hi.y, 99.0);
+  // the scene grows within the grid: its new bounds, the grid kept
+  const double grown[6] = { 0, 10, -1, 6, 0, 10 };
+  grid.SetScene(grown);
+  grid.SceneVoxels(lo, hi);
+  EXPECT_DOUBLE_EQ(lo.y, 17.0); // 1.5 / (11 / 128) = 17.45
+  // unknown or beyond the grid: the grid's faces
+  VoxelGrid unknown = grid;
+  unknown.SceneLo = glm::dvec3(1.0);
+  unknown.SceneHi = glm::dvec3(0.0);
+  unknown.SceneVoxels(lo, hi);
+  EXPECT_EQ(lo, glm::dvec3(0.0));
+  EXPECT_EQ(hi, glm::dvec3(128.0));
+  const double beyond[6] = { -100, 100, -100, 100, -100, 100 };
+  grid.SetScene(beyond);
+  grid.SceneVoxels(lo, hi);
+  EXPECT_EQ(lo, glm::dvec3(0.0));
+  EXPECT_EQ(hi, glm::dvec3(128.0));
+}
+
 TEST(VoxelGrid, FlatSceneKeepsCubicVoxels)
 {
   const double bounds[6] = { -1, 1, -3, 3, 0, 0 };
