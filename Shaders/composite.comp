@@ -77,6 +77,10 @@ void main()
 
   vec2 f = texCoord * traceSize - 0.5;
   vec2 base = floor(f);
+  // "A few voxels" in the image's pixels: at a lower trace resolution the tent's samples lie
+  // farther apart, and on a wall seen at a grazing angle a fixed reach kept only the nearest
+  // column of them, one cone turn, in stripes.
+  float reach = 4.0 * max(float(imageSize(compositeColor).x) / traceSize.x, 1.0);
   vec4 indirectSum = vec4(0.0);
   vec3 shadowedSum = vec3(0.0);
   float indirectWeightSum = 0.0;
@@ -105,7 +109,7 @@ void main()
       // the cone turns stay balanced), fading out by a voxel, and within a few voxels of the
       // pixel; normals facing the same way.
       vec3 offset = gbufferGridPosition(uv, d) - p;
-      float near = dot(offset, offset) > 16.0 ? 0.0
+      float near = dot(offset, offset) > reach * reach ? 0.0
         : gridNormal == vec3(0.0) ? exp(-length(offset))
         : 1.0 - smoothstep(0.25, 1.0, abs(dot(offset, gridNormal)));
       vec3 sampleNormal = textureLod(gbufferNormal, uv, 0.0).xyz;
