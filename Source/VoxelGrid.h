@@ -51,8 +51,9 @@ enum class FitStatus
 
 /**
  * Fit a grid around `bounds`: cubic voxels, the largest extent plus `padding` (a fraction of
- * that extent) on each side, centred on the bounds, which it keeps as the scene's. Flat or zero-volume bounds still give a
- * valid grid: a zero extent falls back to a size relative to the coordinates' magnitude.
+ * that extent) on each side, centred on the bounds, which it keeps as the scene's. Flat or
+ * zero-volume bounds still give a valid grid: a zero extent falls back to a size relative to
+ * the coordinates' magnitude.
  */
 FitStatus FitVoxelGrid(const double bounds[6], int resolution, double padding, VoxelGrid& grid);
 
