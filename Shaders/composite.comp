@@ -12,11 +12,12 @@
 // bilinear weights over the nearest four (the traced buffers may be at a lower resolution).
 layout(local_size_x = 8, local_size_y = 8) in;
 
+#include "gbuffer_encoding.glsl"
 #include "gbuffer_position.glsl"
 
 uniform sampler2D gbufferColor;
-uniform sampler2D gbufferNormal;
-uniform sampler2D gbufferAmbient;  // VTK's ambient term of non-emitters; a: coverage
+uniform sampler2D gbufferNormal;   // the packed surface: normal, specular power, kind
+uniform sampler2D gbufferAmbient;  // VTK's ambient term of non-emitters
 uniform sampler2D traceIndirect;   // indirect rgb, AO
 uniform sampler2D traceShadowed;   // occluded direct rgb
 uniform vec2 traceSize;            // texels of the traced buffers
@@ -67,7 +68,9 @@ void main()
     return;
   }
   vec3 p = gbufferGridPosition(texCoord, depth);
-  vec3 n = texelFetch(gbufferNormal, pixel, 0).xyz;
+  vec4 surfaceTexel = texelFetch(gbufferNormal, pixel, 0);
+  float power;
+  vec3 n = gbufferSurfaceNormal(surfaceTexel, power);
   bool hasNormal = dot(n, n) > 0.25;
   // The surface's plane: its normal, or where VTK computed none (unlit actors, scenes without
   // lights) the depth surface's own, from the next pixels' positions.
@@ -112,9 +115,10 @@ void main()
       float near = dot(offset, offset) > reach * reach ? 0.0
         : gridNormal == vec3(0.0) ? exp(-length(offset))
         : 1.0 - smoothstep(0.25, 1.0, abs(dot(offset, gridNormal)));
-      vec3 sampleNormal = textureLod(gbufferNormal, uv, 0.0).xyz;
+      float samplePower;
+      vec3 sampleNormal = gbufferSurfaceNormal(textureLod(gbufferNormal, uv, 0.0), samplePower);
       float facing = hasNormal && dot(sampleNormal, sampleNormal) > 0.25
-        ? pow(max(dot(normalize(n), normalize(sampleNormal)), 0.0), 8.0)
+        ? pow(max(dot(n, sampleNormal), 0.0), 8.0)
         : 1.0;
       float match = near * facing;
       indirectSum += (tent + 1e-3) * match * textureLod(traceIndirect, uv, 0.0);
@@ -133,12 +137,12 @@ void main()
 
   // What the surface keeps of VTK's colour (gbuffer.frag says how alpha reads), and the part
   // of it AO darkens. Other mappers' pixels (alpha 0) get no traced terms.
-  vec4 ambientSample = texelFetch(gbufferAmbient, pixel, 0);
-  ambientSample.rgb = any(isnan(ambientSample.rgb)) ? vec3(0.0) : max(ambientSample.rgb, 0.0);
-  float kind = floor(ambientSample.a + 0.5);
+  vec3 ambientSample = texelFetch(gbufferAmbient, pixel, 0).rgb;
+  ambientSample = any(isnan(ambientSample)) ? vec3(0.0) : max(ambientSample, 0.0);
+  float kind = gbufferSurfaceKind(surfaceTexel);
   float coverage = kind > 0.0 ? 1.0 : 0.0;
-  vec3 own = kind >= 2.0 ? min(ambientSample.rgb, vec3(VOXELGI_HALF_MAX)) : color.rgb;
-  vec3 ambient = kind == 1.0 || kind == 2.0 ? min(ambientSample.rgb, own) : vec3(0.0);
+  vec3 own = kind >= 2.0 ? min(ambientSample, vec3(VOXELGI_HALF_MAX)) : color.rgb;
+  vec3 ambient = kind == 1.0 || kind == 2.0 ? min(ambientSample, own) : vec3(0.0);
   vec3 direct = max(own - ambient - coverage * shadowed, vec3(0.0)) +
     ambient * mix(1.0, indirectAO.a, aoStrength);
   vec3 indirect = coverage * indirectAO.rgb;

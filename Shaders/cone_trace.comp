@@ -20,12 +20,13 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "lights.glsl"
 #include "cone_tracing.glsl"
+#include "gbuffer_encoding.glsl"
 #include "gbuffer_position.glsl"
 #ifdef VOXELGI_SHADOW_MAPS
 #include "shadow_maps.glsl"
 #endif
 
-uniform sampler2D gbufferNormal;
+uniform sampler2D gbufferNormal;   // the packed surface (gbuffer_encoding.glsl)
 uniform sampler2D gbufferMaterial;
 uniform mat3 normalToGrid;      // view-space normals -> grid directions
 uniform vec3 coneDirections[VOXELGI_MAX_CONES];
@@ -78,12 +79,7 @@ const uint reuseLimit = 3u;
 // exact integer in a float.
 float encodeSurface(vec3 n, uint age)
 {
-  vec2 e = n.xy / (abs(n.x) + abs(n.y) + abs(n.z));
-  if (n.z < 0.0)
-  {
-    e = (1.0 - abs(e.yx)) * mix(vec2(-1.0), vec2(1.0), greaterThanEqual(e, vec2(0.0)));
-  }
-  uvec2 q = uvec2(round(clamp(e * 0.5 + 0.5, 0.0, 1.0) * 1023.0));
+  uvec2 q = uvec2(round(gbufferOctahedral(n) * 1023.0));
   return float((min(age, reuseLimit) * 1024u + q.x) * 1024u + q.y);
 }
 
@@ -91,21 +87,9 @@ vec3 decodeSurface(float code, out uint age)
 {
   uint c = uint(code);
   age = c / (1024u * 1024u);
-  vec2 e = vec2(float((c / 1024u) % 1024u), float(c % 1024u)) / 1023.0 * 2.0 - 1.0;
-  vec3 n = vec3(e, 1.0 - abs(e.x) - abs(e.y));
-  if (n.z < 0.0)
-  {
-    n.xy = (1.0 - abs(n.yx)) * mix(vec2(-1.0), vec2(1.0), greaterThanEqual(n.xy, vec2(0.0)));
-  }
-  return normalize(n);
+  return gbufferFromOctahedral(vec2(float((c / 1024u) % 1024u), float(c % 1024u)) / 1023.0);
 }
 
-// The previous frame's results for the surface at p (normal n, seen along viewDir),
-// interpolated bilinearly from its pixels around p's reprojection that held the same
-// surface: a point within a quarter voxel of p's tangent plane and a voxel of p, a normal
-// within ~18 degrees, a result younger than reuseLimit, and a view direction that turned less
-// than acos(viewCosine). False when p was out of its view or most of that weight belongs to
-// other surfaces; `age` gets the oldest result's age.
 bool previousResults(vec3 p, vec3 n, vec3 viewDir, float viewCosine, ivec2 size,
   out vec4 indirect, out vec4 shadowed, out uint age)
 {
@@ -248,8 +232,8 @@ void main()
   vec3 farP = gbufferGridPosition(texCoord, 1.0);
   vec3 viewDir = normalize(farP - nearP);
 
-  vec4 normalSpec = gbufferAt(gbufferNormal, texCoord);
-  vec3 n = normalSpec.xyz;
+  float power;
+  vec3 n = gbufferSurfaceNormal(gbufferAt(gbufferNormal, texCoord), power);
   if (dot(n, n) < 0.25)
   {
     // VTK computed no normal (unlit actor): take the depth surface's own, from the next
@@ -277,14 +261,14 @@ void main()
     // of the lobe.
     bool freshShadows = coneShadows != 0 && shadowsFromMapsOnly();
     bool viewDependent = specular > 0.0 && (specularCone != 0 || (coneShadows != 0 && !freshShadows));
-    float viewCosine = viewDependent ? cos(0.2 * atan(specularTanHalf(normalSpec.w))) : -2.0;
+    float viewCosine = viewDependent ? cos(0.2 * atan(specularTanHalf(power))) : -2.0;
     vec4 previousIndirectAO, previousOccluded;
     uint age;
     if (previousResults(p, n, viewDir, viewCosine, size, previousIndirectAO, previousOccluded, age))
     {
       if (freshShadows)
       {
-        vec3 occluded = occludedDirect(p, p + n * startOffset, n, viewDir, albedo, specular, normalSpec.w);
+        vec3 occluded = occludedDirect(p, p + n * startOffset, n, viewDir, albedo, specular, power);
         previousOccluded =
           !any(isnan(occluded)) && !any(isinf(occluded)) ? vec4(occluded, 1.0) : vec4(0.0);
       }
@@ -323,11 +307,11 @@ void main()
   {
     vec3 r = reflect(viewDir, n);
     float ignored;
-    indirect += specular * specularIntensity * specularReflectance(normalSpec.w) *
-      voxelConeTrace(origin, r, specularTanHalf(normalSpec.w), 1.0, maxDistance, 0.0, p, n, ignored).rgb;
+    indirect += specular * specularIntensity * specularReflectance(power) *
+      voxelConeTrace(origin, r, specularTanHalf(power), 1.0, maxDistance, 0.0, p, n, ignored).rgb;
   }
 
-  vec3 shadowed = coneShadows != 0 ? occludedDirect(p, origin, n, viewDir, albedo, specular, normalSpec.w) : vec3(0.0);
+  vec3 shadowed = coneShadows != 0 ? occludedDirect(p, origin, n, viewDir, albedo, specular, power) : vec3(0.0);
   // Never let a non-finite value through.
   bool finite = !any(isnan(indirect)) && !any(isinf(indirect)) && !any(isnan(shadowed)) &&
     !any(isinf(shadowed)) && !isnan(ao);

@@ -44,33 +44,58 @@ bool voxelOccupied(vec3 q)
   return texelFetch(voxelRadiance, v, 0).a >= 0.5;
 }
 
-// The last sample of a cone that leaves the scene's bounds through a face across `axis`
-// (voxelConeTrace): read along that axis at q, centred in the texel of diameter d (the
-// cone's level) that holds the face's voxels. `open`: the face does not close the scene
-// there. A texel reaching back past the cone's origin would show what lies behind it (in a
-// flat scene, the floor at the top face), and one wider than the cone what lies beside it
-// (the top of a block): the face counts as closed only where the voxels at the exit point
-// and across the scene from it, on the opposite face, are occupied (a room's floor and
-// ceiling, not an open floor).
-void voxelSceneFaceRead(vec3 p, vec3 origin, vec3 dir, int axis, float diameter, out vec3 q,
-  out float d, out bool open)
+// The texel diameter (at least 2) a cone of `diameter` voxels reads at the scene's bounds.
+float voxelSceneFaceLevel(float diameter)
+{
+  return exp2(max(floor(log2(diameter)), 1.0));
+}
+
+// Whether the scene's face across `axis`, left at p by a cone from `origin` along `dir` that
+// reads texels of diameter d there, does not close the scene (voxelConeTrace). A texel
+// reaching back past the cone's origin would show what lies behind it (in a flat scene, the
+// floor at the top face), and one wider than the cone what lies beside it (the top of a
+// block): the face counts as closed only where the voxels at the exit point and across the
+// scene from it, on the opposite face, are occupied (a room's floor and ceiling, not an open
+// floor).
+bool voxelSceneFaceOpen(vec3 p, vec3 origin, vec3 dir, int axis, float d)
 {
   bool up = dir[axis] > 0.0;
   vec3 inward = vec3(0.0);
   inward[axis] = up ? -1.0 : 1.0;
   float face = up ? voxelSceneHi[axis] - 0.5 : voxelSceneLo[axis] + 0.5;
   float across = up ? voxelSceneLo[axis] + 0.5 : voxelSceneHi[axis] - 0.5;
-  d = exp2(max(floor(log2(diameter)), 1.0));
   // (behind the origin: judged on the next level's texel, which the filtered read reaches)
   float reach = floor(face / (2.0 * d)) * 2.0 * d;
   vec3 exitPoint = p, oppositePoint = p;
   exitPoint[axis] = face;
   oppositePoint[axis] = across;
-  open = (up ? reach < origin[axis] : reach + 2.0 * d > origin[axis]) ||
+  return (up ? reach < origin[axis] : reach + 2.0 * d > origin[axis]) ||
     !(voxelOccupied(exitPoint) || voxelOccupied(exitPoint + inward)) ||
     !(voxelOccupied(oppositePoint) || voxelOccupied(oppositePoint - inward));
-  q = p;
-  q[axis] = (floor(face / d) + 0.5) * d;
+}
+
+// The diameter of the texels a cone's sample at p, t voxels out, reads. Near the surface the
+// cone starts from (voxelConeTrace), the largest texel whose reach stays above the surface's
+// voxels; where even the finest level the caller may read (voxelMinLevel; the bounce, which
+// writes the full-resolution volume, reads from level 1) would reach them, p is lifted along
+// the normal to the lowest height a sample may be taken at: it still meets what stands beside
+// the cone (the wall next to a floor), never the surface's own voxels.
+float voxelConeFootprint(inout vec3 p, float t, float tanHalf, vec3 surface, vec3 surfaceNormal)
+{
+  float diameter = 2.0 * tanHalf * t;
+  if (dot(surfaceNormal, surfaceNormal) > 0.0)
+  {
+    float finest = exp2(voxelMinLevel);
+    float height = dot(p - surface, surfaceNormal);
+    float lowest = 1.0 + 1.5 * finest;
+    if (height < lowest)
+    {
+      p += surfaceNormal * (lowest - height);
+      height = lowest;
+    }
+    diameter = min(diameter, exp2(floor(log2((height - 1.0) / 1.5))));
+  }
+  return max(diameter, 1.0);
 }
 
 // Front-to-back accumulation along a cone from `origin`, starting `start` voxels out:
@@ -99,7 +124,7 @@ vec4 voxelConeTrace(vec3 origin, vec3 dir, float tanHalf, float start, float max
   // before that face (read obliquely, the other axes' mips see only part of a one-voxel
   // wall), and takes no step-length correction. At the scene's bounds it is centred on that
   // axis in the texels holding the boundary's voxels (not blended with the empty ones
-  // beyond; voxelSceneFaceRead) and read along that axis alone (another axis' mip, read off
+  // beyond) and read along that axis alone (another axis' mip, read off
   // its own texels' centres, sees part of the wall): a room lower than it is wide has its
   // floor and ceiling deep inside the cubic grid. Where the face is open there, the cone goes
   // on to the grid's face. At the grid's faces, near an edge the axes whose faces lie within
@@ -110,15 +135,20 @@ vec4 voxelConeTrace(vec3 origin, vec3 dir, float tanHalf, float start, float max
   vec3 gridExits = max(-origin / safeDir, (vec3(res) - origin) / safeDir);
   vec3 exits = max((voxelSceneLo.xyz - origin) / safeDir, (voxelSceneHi.xyz - origin) / safeDir);
   float tExit = min(exits.x, min(exits.y, exits.z));
-  // (a cone that starts outside the scene's bounds goes to the grid's face, as before them)
-  bool sceneFace = tExit > t && tExit < min(gridExits.x, min(gridExits.y, gridExits.z));
+  int axis = exits.x == tExit ? 0 : (exits.y == tExit ? 1 : 2);
+  // (a cone that starts outside the scene's bounds goes to the grid's face, as before them;
+  // whether the face is open is decided once, where the last sample will be taken: a branch
+  // in the loop that starts the cone over costs a third of the trace)
+  vec3 pLast = origin + dir * (tExit - 0.5);
+  float dLast = voxelConeFootprint(pLast, tExit - 0.5, tanHalf, surface, surfaceNormal);
+  bool sceneFace = tExit > t && tExit < min(gridExits.x, min(gridExits.y, gridExits.z)) &&
+    !voxelSceneFaceOpen(pLast, origin, dir, axis, voxelSceneFaceLevel(dLast));
   exits = sceneFace ? exits : gridExits;
   tExit = min(exits.x, min(exits.y, exits.z));
   float tEnd = min(maxDistance, tExit);
   bool last = false;
   for (int i = 0; i < 512 && !last && acc.a < 0.99; ++i)
   {
-    float tNext = t;
     if (t >= tEnd)
     {
       if (i == 0 || tEnd >= maxDistance)
@@ -133,31 +163,13 @@ vec4 voxelConeTrace(vec3 origin, vec3 dir, float tanHalf, float start, float max
     {
       break;
     }
-    float diameter = 2.0 * tanHalf * t;
-    if (dot(surfaceNormal, surfaceNormal) > 0.0)
-    {
-      // The largest texel whose reach stays above the surface's voxels. Where even the
-      // finest level the caller may read (voxelMinLevel; the bounce, which writes the
-      // full-resolution volume, reads from level 1) would reach them, the sample is lifted
-      // along the normal to the lowest height it may be taken at: it still meets what
-      // stands beside the cone (the wall next to a floor), never the surface's own voxels.
-      float finest = exp2(voxelMinLevel);
-      float height = dot(p - surface, surfaceNormal);
-      float lowest = 1.0 + 1.5 * finest;
-      if (height < lowest)
-      {
-        p += surfaceNormal * (lowest - height);
-        height = lowest;
-      }
-      diameter = min(diameter, exp2(floor(log2((height - 1.0) / 1.5))));
-    }
-    diameter = max(diameter, 1.0);
+    float diameter = voxelConeFootprint(p, t, tanHalf, surface, surfaceNormal);
     vec3 readDir = dir;
-    bool open = false;
     if (last && sceneFace)
     {
-      int axis = exits.x == tExit ? 0 : (exits.y == tExit ? 1 : 2);
-      voxelSceneFaceRead(p, origin, dir, axis, diameter, p, diameter, open);
+      diameter = voxelSceneFaceLevel(diameter);
+      float face = dir[axis] > 0.0 ? voxelSceneHi[axis] - 0.5 : voxelSceneLo[axis] + 0.5;
+      p[axis] = (floor(face / diameter) + 0.5) * diameter;
       readDir = vec3(0.0);
       readDir[axis] = sign(safeDir[axis]);
     }
@@ -168,17 +180,6 @@ vec4 voxelConeTrace(vec3 origin, vec3 dir, float tanHalf, float start, float max
     }
     // (one call site: the sampler selection inside is large, and so is its compiled code)
     vec4 s = voxelSampleCone(p, diameter, readDir);
-    if (last && sceneFace && (open || s.a < 0.5))
-    {
-      // an open face: on to the grid's, as if the scene's bounds were not there
-      sceneFace = false;
-      last = false;
-      exits = gridExits;
-      tExit = min(exits.x, min(exits.y, exits.z));
-      tEnd = min(maxDistance, tExit);
-      t = tNext;
-      continue;
-    }
     // Opacity correction for steps shorter or longer than the sample's extent. At the
     // scene's bounds the last sample's opacity is the share of the footprint blocked up to
     // the face, which the earlier samples' filters have partly seen already: it raises the

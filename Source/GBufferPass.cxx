@@ -13,6 +13,7 @@
 #include "vtkOpenGLPolyDataMapper.h"
 #include "vtkOpenGLRenderPass.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
 #include "vtkProperty.h"
 #include "vtkRenderPassCollection.h"
 #include "vtkRenderState.h"
@@ -97,10 +98,12 @@ bool GBufferPass::Prepare(const Frame& frame, std::string&)
   if (!this->Framebuffer)
   {
     vtkOpenGLRenderWindow* renWin = frame.Window;
+    // The fewest bytes a pixel (gbuffer.frag, gbuffer_encoding.glsl): with few raster units
+    // the G-buffer's time grows with them. VTK's colour keeps its alpha and half floats.
     this->Color = NewImageTexture(renWin, GL_RGBA16F, width, height);
-    this->Normal = NewImageTexture(renWin, GL_RGBA16F, width, height);
+    this->Normal = NewImageTexture(renWin, GL_RGB10_A2, width, height);
     this->Material = NewImageTexture(renWin, GL_RGBA8, width, height);
-    this->Ambient = NewImageTexture(renWin, GL_RGBA16F, width, height);
+    this->Ambient = NewImageTexture(renWin, GL_R11F_G11F_B10F, width, height);
     this->Depth = vtkSmartPointer<vtkTextureObject>::New();
     this->Depth->SetContext(renWin);
     this->Depth->SetMinificationFilter(vtkTextureObject::Nearest);
@@ -191,21 +194,33 @@ void GBufferPass::Begin()
   target->AddColorAttachment(2, this->Material);
   target->AddColorAttachment(3, this->Ambient);
   target->AddDepthAttachment(this->Depth);
+  // VTK's clear reaches every attachment (one clear is far cheaper than clearing the data
+  // attachments apart); the composite tells the background by its depth.
   target->ActivateDrawBuffers(4);
   target->StartNonOrtho(this->Color->GetWidth(), this->Color->GetHeight());
   for (unsigned int i = 0; i < 3; ++i)
   {
     this->BlendWasEnabled[i] = glIsEnabledi(GL_BLEND, i + 1) == GL_TRUE;
   }
-  DisableDataBlending();
+  SetDataBlending(true);
 }
 
-void GBufferPass::DisableDataBlending()
+void GBufferPass::SetDataBlending(bool polyData)
 {
-  // VTK blends its opaque pass; the data attachments must be written as they are.
-  glDisablei(GL_BLEND, 1);
+  // VTK blends its opaque pass; the data attachments must be written as they are. Other
+  // mappers' shaders write no surface: blending makes it zero (kind 0, no GI terms), whatever
+  // their second output holds.
   glDisablei(GL_BLEND, 2);
   glDisablei(GL_BLEND, 3);
+  if (polyData)
+  {
+    glDisablei(GL_BLEND, 1);
+  }
+  else
+  {
+    glEnablei(GL_BLEND, 1);
+    glBlendFunci(1, GL_ZERO, GL_ZERO);
+  }
 }
 
 void GBufferPass::End()
@@ -216,7 +231,17 @@ void GBufferPass::End()
     {
       glEnablei(GL_BLEND, i + 1);
     }
+    else
+    {
+      glDisablei(GL_BLEND, i + 1);
+    }
   }
+  // Draw buffer 1's blend function back to the one VTK's state holds for all buffers.
+  int blend[4];
+  static_cast<vtkOpenGLRenderWindow*>(this->Framebuffer->GetContext())
+    ->GetState()
+    ->GetBlendFuncState(blend);
+  glBlendFuncSeparatei(1, blend[0], blend[1], blend[2], blend[3]);
   this->Framebuffer->UnBind();
   this->Framebuffer->RestorePreviousBindingsAndBuffers();
 }
@@ -252,7 +277,8 @@ bool GBufferPass::ReplaceShaderValues(
   {
     defines += "#define VOXELGI_AMBIENT_ONLY\n";
   }
-  vtkShaderProgram::Substitute(fragment, "//VTK::System::Dec", "//VTK::System::Dec\n" + defines);
+  vtkShaderProgram::Substitute(fragment, "//VTK::System::Dec",
+    "//VTK::System::Dec\n" + defines + shaders::gbuffer_encoding_glsl);
   const std::size_t end = fragment.rfind('}');
   if (end != std::string::npos)
   {
@@ -263,12 +289,13 @@ bool GBufferPass::ReplaceShaderValues(
 
 bool GBufferPass::SetParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop)
 {
-  // Polydata mappers write all attachments, other mappers only the colour. VTK's own
-  // framebuffer keeps its draw buffers: the data outputs go nowhere there.
+  // Polydata mappers write all attachments, other mappers the colour and (SetDataBlending)
+  // an empty surface. VTK's own framebuffer keeps its draw buffers: the data outputs go
+  // nowhere there.
   const bool polyData = vtkOpenGLPolyDataMapper::SafeDownCast(mapper) != nullptr;
   if (this->IntoGBuffer)
   {
-    this->Framebuffer->ActivateDrawBuffers(polyData ? 4 : 1);
+    this->Framebuffer->ActivateDrawBuffers(polyData ? 4 : 2);
   }
   if (polyData)
   {
@@ -284,7 +311,7 @@ bool GBufferPass::SetParameters(vtkShaderProgram* program, vtkAbstractMapper* ma
   // Before every draw: VTK's state handling may have re-enabled blending for all buffers.
   if (this->IntoGBuffer)
   {
-    DisableDataBlending();
+    SetDataBlending(polyData);
   }
   return true;
 }

@@ -2,9 +2,9 @@
  * GBuffer stage: an internal render pass in which VTK renders the frame's camera, lights and
  * opaque geometry (its own shading kept in attachment 0) into the pass's framebuffer at one
  * sample per pixel, while fragment code it injects into the polydata mappers (gbuffer.frag)
- * adds the view-space normal and specular power (attachment 1), the albedo and specular
- * intensity (attachment 2) and the ambient term (attachment 3); depth goes to a float texture
- * (the vtkSSAOPass pattern). A delegate that is not a vtkRenderStepsPass renders whole into
+ * adds the surface, packed (the view-space normal, specular power and the pixel's kind;
+ * attachment 1, gbuffer_encoding.glsl), the albedo and specular intensity (attachment 2) and
+ * the ambient term (attachment 3); depth goes to a float texture (the vtkSSAOPass pattern). A delegate that is not a vtkRenderStepsPass renders whole into
  * attachment 0. The same pass draws VTK's own image of those steps into the frame's
  * framebuffer (RenderVTK), with the window's multisampling, through the same shaders, so that
  * a mapper keeps one shader program for both draws.
@@ -48,6 +48,7 @@ public:
   void ReleaseGraphicsResources(vtkWindow* window) override;
 
   vtkTextureObject* GetColor() const { return this->Color; }
+  /// The packed surface: normal, specular power and kind (gbuffer_encoding.glsl).
   vtkTextureObject* GetNormal() const { return this->Normal; }
   vtkTextureObject* GetMaterial() const { return this->Material; }
   /// VTK's ambient term of surfaces that do not emit: the part AO may darken.
@@ -76,7 +77,7 @@ private:
   /// Bind the G-buffer's framebuffer (saving the current bindings) / restore.
   void Begin();
   void End();
-  static void DisableDataBlending();
+  static void SetDataBlending(bool polyData);
 
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
   vtkSmartPointer<vtkTextureObject> Color;
