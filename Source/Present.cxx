@@ -85,7 +85,7 @@ void Present::Run(const Frame& frame)
   if (frame.Plan.VoxelView)
   {
     ScopedStage stage(*frame.Clock, stage::Present);
-    this->Draw(frame, nullptr, this->Debug.GetImage());
+    this->Draw(frame, Mode::Over, nullptr, this->Debug.GetImage());
     this->RenderedProps = 0;
     return;
   }
@@ -97,9 +97,18 @@ void Present::Run(const Frame& frame)
   }
   else
   {
-    this->OpaqueProps = this->GBuffer.RenderVTK(frame);
+    // VTK's draw into a framebuffer of one sample would repeat the G-buffer's, unless it
+    // draws over colours it keeps (a renderer of a layer above another: its G-buffer holds no
+    // background).
+    GLint samples = 0;
+    glGetIntegerv(GL_SAMPLES, &samples);
+    const Mode mode =
+      samples > 1 || frame.Renderer->Transparent() ? Mode::Samples : Mode::Whole;
+    this->OpaqueProps = mode == Mode::Samples ? this->GBuffer.RenderVTK(frame)
+                                              : this->GBuffer.GetNumberOfRenderedProps();
     ScopedStage stage(*frame.Clock, stage::Present);
-    this->Draw(frame, this->Compositor.GetPresentScale(), this->Compositor.GetPresentAdd());
+    this->Draw(
+      frame, mode, this->Compositor.GetPresentScale(), this->Compositor.GetPresentAdd());
     if (unchanged)
     {
       this->Unchanged.Store(frame);
@@ -113,15 +122,17 @@ void Present::Run(const Frame& frame)
   this->RenderedProps = this->OpaqueProps + this->RenderRemainingSteps(frame);
 }
 
-void Present::Draw(const Frame& frame, vtkTextureObject* scale, vtkTextureObject* add)
+void Present::Draw(const Frame& frame, Mode mode, vtkTextureObject* scale, vtkTextureObject* add)
 {
   vtkShaderProgram* program = ReadyQuad(this->Quad, frame.Window, PresentSource());
-  vtkTextureObject* depth = scale ? this->GBuffer.GetDepth() : nullptr;
-  if (!program || !add || (scale && !depth))
+  vtkTextureObject* depth = mode != Mode::Over ? this->GBuffer.GetDepth() : nullptr;
+  vtkTextureObject* color = mode == Mode::Whole ? this->GBuffer.GetColor() : nullptr;
+  if (!program || !add || (mode != Mode::Over && !(scale && depth)) ||
+    (mode == Mode::Whole && !color))
   {
     return;
   }
-  ScopedTextures inputs({ add, scale, depth });
+  ScopedTextures inputs({ add, scale, depth, color });
   if (!(inputs.Complete()))
   {
     return;
@@ -129,7 +140,8 @@ void Present::Draw(const Frame& frame, vtkTextureObject* scale, vtkTextureObject
   program->SetUniformi("presentAdd", add->GetTextureUnit());
   program->SetUniformi("presentScale", (scale ? scale : add)->GetTextureUnit());
   program->SetUniformi("gbufferDepth", (depth ? depth : add)->GetTextureUnit());
-  program->SetUniformi("absolute", scale ? 0 : 1);
+  program->SetUniformi("gbufferColor", (color ? color : add)->GetTextureUnit());
+  program->SetUniformi("presentMode", static_cast<int>(mode));
   vtkOpenGLState* ostate = frame.Window->GetState();
   RendererViewport viewport(frame, ostate);
   vtkOpenGLState::ScopedglEnableDisable depthTest(ostate, GL_DEPTH_TEST);
@@ -137,13 +149,23 @@ void Present::Draw(const Frame& frame, vtkTextureObject* scale, vtkTextureObject
   vtkOpenGLState::ScopedglBlendFuncSeparate blendFunc(ostate);
   vtkOpenGLState::ScopedglDepthFunc depthFunc(ostate);
   vtkOpenGLState::ScopedglDepthMask depthMask(ostate);
-  ostate->vtkglEnable(GL_BLEND);
-  ostate->vtkglBlendEquation(GL_FUNC_ADD);
-  // Each sample: add + scale * sample (alpha: 0 + 1 * alpha).
-  ostate->vtkglBlendFuncSeparate(GL_ONE, GL_SRC1_COLOR, GL_ONE, GL_SRC1_ALPHA);
   ostate->vtkglEnable(GL_DEPTH_TEST);
-  ostate->vtkglDepthFunc(GL_GEQUAL);
-  ostate->vtkglDepthMask(GL_FALSE);
+  if (mode == Mode::Whole)
+  {
+    // Every pixel of the viewport, with its depth: VTK's image as its draw would leave it.
+    ostate->vtkglDisable(GL_BLEND);
+    ostate->vtkglDepthFunc(GL_ALWAYS);
+    ostate->vtkglDepthMask(GL_TRUE);
+  }
+  else
+  {
+    ostate->vtkglEnable(GL_BLEND);
+    ostate->vtkglBlendEquation(GL_FUNC_ADD);
+    // Each sample: add + scale * sample (alpha: 0 + 1 * alpha).
+    ostate->vtkglBlendFuncSeparate(GL_ONE, GL_SRC1_COLOR, GL_ONE, GL_SRC1_ALPHA);
+    ostate->vtkglDepthFunc(GL_GEQUAL);
+    ostate->vtkglDepthMask(GL_FALSE);
+  }
   this->Quad->Render();
 }
 

@@ -3,7 +3,9 @@
  * framebuffer as it would without the pass (its multisampling, depth and look kept, through
  * the G-buffer's shaders), then the composite is blended into each of its samples (s * scale +
  * add, depth-tested so that edges keep VTK's coverage), or, in a voxel debug view, the debug
- * image is drawn over VTK's image. A frame that shows the last image again copies it back
+ * image is drawn over VTK's image. A framebuffer of one sample takes the G-buffer's own draw
+ * of those steps instead (its colour and depth, with the composite applied): VTK's draw would
+ * repeat it. A frame that shows the last image again copies it back
  * (FrameCopy) where the framebuffer allows. The one full-screen fragment pass of the pipeline: the
  * framebuffer may be VTK's, ParaView's or a Qt widget's. Then VTK's own remaining steps draw
  * as VTK would draw them, with the renderer's FXAA (vtkRenderer::UseFXAA) before volumes and
@@ -52,9 +54,14 @@ public:
   void ReleaseGraphicsResources(vtkWindow* window);
 
 private:
-  /// Blend `scale` and `add` (with the G-buffer's depth) into the framebuffer, or draw `add`
-  /// as it is when `scale` is null.
-  void Draw(const Frame& frame, vtkTextureObject* scale, vtkTextureObject* add);
+  /// How Draw puts its image into the framebuffer (present.frag's modes).
+  enum class Mode
+  {
+    Samples = 0, ///< scale and add blended into VTK's samples, depth-tested (VTK drew them)
+    Over = 1,    ///< add as it is over VTK's image (a voxel debug view)
+    Whole = 2    ///< VTK's colour from the G-buffer, scaled and added to, with its depth
+  };
+  void Draw(const Frame& frame, Mode mode, vtkTextureObject* scale, vtkTextureObject* add);
   int RenderRemainingSteps(const Frame& frame);
 
   const Composite& Compositor;

@@ -4,7 +4,9 @@
 // ray-cast volume), "overlay" (text): two intersecting translucent props over an opaque plane
 // with a line on it; case "msaa": the same in an 8x multisampled window, whose edges and line
 // keep VTK's anti-aliasing; case "points": translucent point clouds coloured by RGBA
-// scalars, one drawn as spheres (as vedo's Points), in the 8x window. In a scene where GI has nothing to add (indirect light, AO,
+// scalars, one drawn as spheres (as vedo's Points), in the 8x window; case "layer": the scene's
+// renderer on a layer above another's red background, in a window of one sample (where the
+// pass presents its G-buffer's image unless the renderer keeps colours below it). In a scene where GI has nothing to add (indirect light, AO,
 // shadow and specular cones off), against plain VTK in the same window: at most 0.5 % of the
 // pixels may differ by more than 3/255.
 #include "VoxelGITestUtilities.h"
@@ -147,6 +149,14 @@ int TestGIVTKLook(int argc, char* argv[])
 
   voxelgi_test::GIWindow view(renderer, 32, 200, which == "msaa" || which == "points" ? 8 : 0);
   vtkRenderWindow* window = view.Window;
+  vtkNew<vtkRenderer> below;
+  if (which == "layer")
+  {
+    below->SetBackground(0.6, 0.1, 0.1);
+    window->SetNumberOfLayers(2);
+    window->AddRenderer(below);
+    renderer->SetLayer(1);
+  }
   vtkVoxelGIPass* gi = view.GI;
   window->SetAlphaBitPlanes(1);
   view.RenderWithoutGI();
