@@ -8,9 +8,11 @@
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
 #include "vtkSphereSource.h"
+#include "vtkTubeFilter.h"
 
 #include <cmath>
 
@@ -18,6 +20,11 @@ namespace voxelgi
 {
 
 bool ImposterProxies::Applies(vtkActor* actor)
+{
+  return Spheres(actor) || Tubes(actor);
+}
+
+bool ImposterProxies::Spheres(vtkActor* actor)
 {
   vtkProperty* property = actor->GetProperty();
   vtkMapper* mapper = actor->GetMapper();
@@ -31,6 +38,17 @@ bool ImposterProxies::Applies(vtkActor* actor)
   return property->GetRepresentation() == VTK_POINTS ||
     (property->GetRepresentation() == VTK_SURFACE && input->GetNumberOfVerts() > 0 &&
       input->GetNumberOfLines() + input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0);
+}
+
+bool ImposterProxies::Tubes(vtkActor* actor)
+{
+  vtkProperty* property = actor->GetProperty();
+  vtkMapper* mapper = actor->GetMapper();
+  auto* input = mapper ? vtkPolyData::SafeDownCast(mapper->GetInputDataObject(0, 0)) : nullptr;
+  // Lines with nothing of area beside them (a surface's edges keep the surface's path).
+  return input && property->GetRenderLinesAsTubes() && !mapper->IsA("vtkGlyph3DMapper") &&
+    property->GetRepresentation() != VTK_POINTS && input->GetNumberOfLines() > 0 &&
+    input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0;
 }
 
 double ImposterProxies::WorldRadius(vtkActor* actor, vtkRenderer* renderer)
@@ -48,7 +66,9 @@ double ImposterProxies::WorldRadius(vtkActor* actor, vtkRenderer* renderer)
   const double viewHeight = camera->GetParallelProjection()
     ? 2.0 * camera->GetParallelScale()
     : 2.0 * distance * std::tan(vtkMath::RadiansFromDegrees(0.5 * camera->GetViewAngle()));
-  return 0.5 * actor->GetProperty()->GetPointSize() * viewHeight / height;
+  vtkProperty* property = actor->GetProperty();
+  const double pixels = Tubes(actor) ? property->GetLineWidth() : property->GetPointSize();
+  return 0.5 * pixels * viewHeight / height;
 }
 
 vtkActor* ImposterProxies::Update(
@@ -57,7 +77,8 @@ vtkActor* ImposterProxies::Update(
   auto* input = vtkPolyData::SafeDownCast(actor->GetMapper()->GetInputDataObject(0, 0));
   if (!input || input->GetNumberOfPoints() == 0)
   {
-    reason = std::string(actor->GetClassName()) + " (points drawn as spheres, but no points)";
+    reason = std::string(actor->GetClassName()) +
+      (Tubes(actor) ? " (lines drawn as tubes, but no points)" : " (points drawn as spheres, but no points)");
     this->Proxies.erase(actor);
     return nullptr;
   }
@@ -80,21 +101,41 @@ vtkActor* ImposterProxies::Update(
 void ImposterProxies::Build(vtkActor* actor, vtkActor* proxy, double radius)
 {
   vtkMapper* mapper = actor->GetMapper();
-  vtkNew<vtkSphereSource> sphere;
-  sphere->SetRadius(radius);
-  sphere->SetThetaResolution(12);
-  sphere->SetPhiResolution(8);
-  vtkNew<vtkGlyph3DMapper> glyphs;
-  // The actor's colouring: lookup table, scalar mode and range, array selection.
-  glyphs->vtkMapper::ShallowCopy(mapper);
-  glyphs->SetInputData(vtkPolyData::SafeDownCast(mapper->GetInputDataObject(0, 0)));
-  glyphs->SetSourceConnection(sphere->GetOutputPort());
-  glyphs->ScalingOff();
-  glyphs->OrientOff();
-  proxy->SetMapper(glyphs);
+  auto* input = vtkPolyData::SafeDownCast(mapper->GetInputDataObject(0, 0));
+  vtkSmartPointer<vtkMapper> shapes;
+  if (Tubes(actor))
+  {
+    // Each line as the cylinder its imposter shows, the lines' point data carried along.
+    vtkNew<vtkTubeFilter> tubes;
+    tubes->SetInputData(input);
+    tubes->SetRadius(radius);
+    tubes->SetNumberOfSides(8);
+    tubes->CappingOn();
+    auto polygons = vtkSmartPointer<vtkPolyDataMapper>::New();
+    // The actor's colouring: lookup table, scalar mode and range, array selection.
+    polygons->vtkMapper::ShallowCopy(mapper);
+    polygons->SetInputConnection(tubes->GetOutputPort());
+    shapes = polygons;
+  }
+  else
+  {
+    vtkNew<vtkSphereSource> sphere;
+    sphere->SetRadius(radius);
+    sphere->SetThetaResolution(12);
+    sphere->SetPhiResolution(8);
+    auto glyphs = vtkSmartPointer<vtkGlyph3DMapper>::New();
+    glyphs->vtkMapper::ShallowCopy(mapper);
+    glyphs->SetInputData(input);
+    glyphs->SetSourceConnection(sphere->GetOutputPort());
+    glyphs->ScalingOff();
+    glyphs->OrientOff();
+    shapes = glyphs;
+  }
+  proxy->SetMapper(shapes);
   proxy->GetProperty()->DeepCopy(actor->GetProperty());
   proxy->GetProperty()->SetRepresentationToSurface();
   proxy->GetProperty()->SetRenderPointsAsSpheres(false);
+  proxy->GetProperty()->SetRenderLinesAsTubes(false);
   vtkNew<vtkMatrix4x4> matrix;
   matrix->DeepCopy(actor->GetMatrix());
   proxy->SetUserMatrix(matrix);

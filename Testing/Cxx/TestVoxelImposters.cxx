@@ -1,9 +1,10 @@
-// Points drawn as spheres (RenderPointsAsSpheres) against the same spheres as polygons: a
-// cloud of 150 points of 10 pixels over a floor under a sun, and the same points glyphed with
-// polygonal spheres of the radius the sprites show (half the point size in pixels at the
-// cloud centre's distance from the camera: VTK's sprites are that many pixels across). Their
-// voxel occupancy above the floor and the ambient occlusion of the floor below them agree
-// within 5 %.
+// Points drawn as spheres (RenderPointsAsSpheres) and lines drawn as tubes (RenderLinesAsTubes)
+// against the same shapes as polygons: a cloud of 150 points of 10 pixels, and nine lines of 10
+// pixels, over a floor under a sun, and the same points glyphed with polygonal spheres, the
+// same lines swept into polygonal tubes, of the radius the imposters show (half the point size
+// or line width in pixels at the shapes' centre's distance from the camera: VTK's imposters are
+// that many pixels across). Their voxel occupancy above the floor and the ambient occlusion of
+// the floor below them agree within 5 %.
 #include "VoxelGITestUtilities.h"
 #include "vtkVoxelGIPass.h"
 #include "vtkVoxelGIScenes.h"
@@ -14,6 +15,7 @@
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkGlyph3D.h"
+#include "vtkTubeFilter.h"
 #include "vtkImageData.h"
 #include "vtkLight.h"
 #include "vtkMath.h"
@@ -72,8 +74,31 @@ vtkSmartPointer<vtkPolyData> Cloud()
   return cloud;
 }
 
-/// Render the cloud over the floor as sprites or as polygonal spheres of `radius`.
-bool Measure(vtkPolyData* cloud, bool polygons, double radius, Measured& m)
+/// Nine lines along x, 3 long, on a 3 x 3 grid across y and z around Centre.
+vtkSmartPointer<vtkPolyData> Lines()
+{
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> lines;
+  for (int j = -1; j <= 1; ++j)
+  {
+    for (int k = -1; k <= 1; ++k)
+    {
+      lines->InsertNextCell(10);
+      for (int i = 0; i < 10; ++i)
+      {
+        lines->InsertCellPoint(points->InsertNextPoint(-1.5 + i / 3.0, Centre.y + j, k));
+      }
+    }
+  }
+  auto result = vtkSmartPointer<vtkPolyData>::New();
+  result->SetPoints(points);
+  result->SetLines(lines);
+  return result;
+}
+
+/// Render `shapes` (points, or lines with `tubes`) over the floor as imposters or as polygonal
+/// spheres or tubes of `radius`.
+bool Measure(vtkPolyData* shapes, bool tubes, bool polygons, double radius, Measured& m)
 {
   voxelgi_test::GIWindow view(nullptr, 64, Size, 0);
   vtkRenderer* renderer = view.Renderer;
@@ -82,25 +107,36 @@ bool Measure(vtkPolyData* cloud, bool polygons, double radius, Measured& m)
   vtkNew<vtkPolyDataMapper> mapper;
   vtkNew<vtkSphereSource> sphere;
   vtkNew<vtkGlyph3D> glyphs;
-  if (polygons)
+  vtkNew<vtkTubeFilter> swept;
+  if (polygons && tubes)
+  {
+    swept->SetInputData(shapes);
+    swept->SetRadius(radius);
+    swept->SetNumberOfSides(16);
+    swept->CappingOn();
+    mapper->SetInputConnection(swept->GetOutputPort());
+  }
+  else if (polygons)
   {
     sphere->SetRadius(radius);
     sphere->SetThetaResolution(16);
     sphere->SetPhiResolution(12);
-    glyphs->SetInputData(cloud);
+    glyphs->SetInputData(shapes);
     glyphs->SetSourceConnection(sphere->GetOutputPort());
     glyphs->ScalingOff();
     mapper->SetInputConnection(glyphs->GetOutputPort());
   }
   else
   {
-    mapper->SetInputData(cloud);
+    mapper->SetInputData(shapes);
   }
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);
   actor->GetProperty()->SetColor(0.9, 0.4, 0.2);
-  actor->GetProperty()->SetRenderPointsAsSpheres(!polygons);
+  actor->GetProperty()->SetRenderPointsAsSpheres(!polygons && !tubes);
+  actor->GetProperty()->SetRenderLinesAsTubes(!polygons && tubes);
   actor->GetProperty()->SetPointSize(PointSize);
+  actor->GetProperty()->SetLineWidth(PointSize);
   renderer->AddActor(actor);
   vtkNew<vtkLight> sun;
   sun->SetLightTypeToSceneLight();
@@ -129,31 +165,47 @@ bool Measure(vtkPolyData* cloud, bool polygons, double radius, Measured& m)
     albedo->GetPoint(i, p);
     m.Occupied += (p[1] > 0.3 && values->GetComponent(i, 3) > 0.0) ? 1 : 0;
   }
-  // The floor below and in front of the cloud: the lower part of the image.
+  // The floor below and in front of the shapes: the lower part of the image.
   m.FloorAO = voxelgi_test::MeanOver(indirect, Size, 40, 10, 160, 50, 3);
   return true;
+}
+
+/// The imposters of `shapes` against the same shapes as polygons.
+bool Compare(vtkPolyData* shapes, bool tubes)
+{
+  // The imposters' world radius: half their size in pixels, a pixel being the view's height
+  // at the shapes' distance over the image's height.
+  const double distance = glm::length(Eye - Centre);
+  const double radius = 0.5 * PointSize *
+    (2.0 * distance * std::tan(vtkMath::RadiansFromDegrees(15.0))) / Size;
+  const char* what = tubes ? "tubes" : "spheres";
+  Measured imposters, polygons;
+  if (!Measure(shapes, tubes, false, radius, imposters) ||
+    !Measure(shapes, tubes, true, radius, polygons))
+  {
+    std::cerr << what << ": GI did not run" << std::endl;
+    return false;
+  }
+  std::cout << what << " of radius " << radius << ": occupied voxels " << imposters.Occupied
+            << " (imposters) against " << polygons.Occupied << " (polygons); floor AO "
+            << imposters.FloorAO << " against " << polygons.FloorAO << std::endl;
+  if (polygons.Occupied <= 100 || polygons.FloorAO <= 0.01)
+  {
+    std::cerr << what << ": nothing measured" << std::endl;
+    return false;
+  }
+  bool ok = voxelgi_test::Within(std::string("occupancy of imposter ") + what + " against polygons",
+    std::abs(static_cast<double>(imposters.Occupied) / polygons.Occupied - 1.0), 0.05, 0.05);
+  ok = voxelgi_test::Within(std::string("floor AO of imposter ") + what + " against polygons",
+         std::abs(imposters.FloorAO / polygons.FloorAO - 1.0), 0.05, 0.05) &&
+    ok;
+  return ok;
 }
 }
 
 int TestVoxelImposters(int, char*[])
 {
-  vtkSmartPointer<vtkPolyData> cloud = Cloud();
-  // The sprites' world radius: half the point size in pixels, a pixel being the view's
-  // height at the cloud's distance over the image's height.
-  const double distance = glm::length(Eye - Centre);
-  const double radius = 0.5 * PointSize *
-    (2.0 * distance * std::tan(vtkMath::RadiansFromDegrees(15.0))) / Size;
-  Measured sprites, spheres;
-  VOXELGI_CHECK(Measure(cloud, false, radius, sprites), "GI did not run with the sprites");
-  VOXELGI_CHECK(Measure(cloud, true, radius, spheres), "GI did not run with the polygons");
-  std::cout << "sphere radius " << radius << ": occupied voxels " << sprites.Occupied
-            << " (sprites) against " << spheres.Occupied << " (polygons); floor AO "
-            << sprites.FloorAO << " against " << spheres.FloorAO << std::endl;
-  VOXELGI_CHECK(spheres.Occupied > 100 && spheres.FloorAO > 0.01, "nothing measured");
-  bool ok = voxelgi_test::Within("occupancy of sprites against polygons",
-    std::abs(static_cast<double>(sprites.Occupied) / spheres.Occupied - 1.0), 0.05, 0.05);
-  ok = voxelgi_test::Within("floor AO of sprites against polygons",
-         std::abs(sprites.FloorAO / spheres.FloorAO - 1.0), 0.05, 0.05) &&
-    ok;
-  return ok ? EXIT_SUCCESS : EXIT_FAILURE;
+  const bool spheres = Compare(Cloud(), false);
+  const bool tubes = Compare(Lines(), true);
+  return spheres && tubes ? EXIT_SUCCESS : EXIT_FAILURE;
 }
