@@ -1,13 +1,13 @@
 /**
  * GBuffer stage: an internal render pass in which VTK renders the frame's camera, lights and
  * opaque geometry (its own shading kept in attachment 0) into the pass's framebuffer at one
- * sample per pixel, while fragment code it injects into the polydata mappers (gbuffer.frag)
- * adds the surface, packed (the view-space normal, specular power and the pixel's kind;
- * attachment 1, gbuffer_encoding.glsl), the albedo and specular intensity (attachment 2) and
- * the ambient term (attachment 3); depth goes to a float texture (the vtkSSAOPass pattern). A delegate that is not a vtkRenderStepsPass renders whole into
- * attachment 0. The same pass draws VTK's own image of those steps into the frame's
- * framebuffer (RenderVTK), with the window's multisampling, through the same shaders, so that
- * a mapper keeps one shader program for both draws.
+ * sample per pixel, while fragment code it injects into the polydata mappers (gbuffer.frag) adds
+ * the surface, packed (the view-space normal, specular power and the pixel's kind; attachment 1,
+ * gbuffer_encoding.glsl), the albedo and specular intensity (attachment 2) and the ambient term
+ * (attachment 3); depth goes to a float texture (the vtkSSAOPass pattern). A delegate that is
+ * not a vtkRenderStepsPass renders whole into attachment 0. The same pass draws VTK's own image
+ * of those steps into the frame's framebuffer (RenderVTK), with the window's multisampling,
+ * through the same shaders, so that a mapper keeps one shader program for both draws.
  */
 #ifndef VoxelGIGBufferPass_h
 #define VoxelGIGBufferPass_h

@@ -24,12 +24,19 @@ bool ImposterProxies::Applies(vtkActor* actor)
   return Spheres(actor) || Tubes(actor);
 }
 
+vtkPolyData* ImposterProxies::Input(vtkActor* actor)
+{
+  vtkMapper* mapper = actor->GetMapper();
+  return mapper && !mapper->IsA("vtkGlyph3DMapper")
+    ? vtkPolyData::SafeDownCast(mapper->GetInputDataObject(0, 0))
+    : nullptr;
+}
+
 bool ImposterProxies::Spheres(vtkActor* actor)
 {
   vtkProperty* property = actor->GetProperty();
-  vtkMapper* mapper = actor->GetMapper();
-  auto* input = mapper ? vtkPolyData::SafeDownCast(mapper->GetInputDataObject(0, 0)) : nullptr;
-  if (!input || !property->GetRenderPointsAsSpheres() || mapper->IsA("vtkGlyph3DMapper"))
+  vtkPolyData* input = Input(actor);
+  if (!input || !property->GetRenderPointsAsSpheres())
   {
     return false;
   }
@@ -43,10 +50,9 @@ bool ImposterProxies::Spheres(vtkActor* actor)
 bool ImposterProxies::Tubes(vtkActor* actor)
 {
   vtkProperty* property = actor->GetProperty();
-  vtkMapper* mapper = actor->GetMapper();
-  auto* input = mapper ? vtkPolyData::SafeDownCast(mapper->GetInputDataObject(0, 0)) : nullptr;
+  vtkPolyData* input = Input(actor);
   // Lines with nothing of area beside them (a surface's edges keep the surface's path).
-  return input && property->GetRenderLinesAsTubes() && !mapper->IsA("vtkGlyph3DMapper") &&
+  return input && property->GetRenderLinesAsTubes() &&
     property->GetRepresentation() != VTK_POINTS && input->GetNumberOfLines() > 0 &&
     input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0;
 }
@@ -74,11 +80,11 @@ double ImposterProxies::WorldRadius(vtkActor* actor, vtkRenderer* renderer)
 vtkActor* ImposterProxies::Update(
   vtkActor* actor, vtkMTimeType signature, vtkRenderer* renderer, std::string& reason)
 {
-  auto* input = vtkPolyData::SafeDownCast(actor->GetMapper()->GetInputDataObject(0, 0));
+  vtkPolyData* input = Input(actor);
   if (!input || input->GetNumberOfPoints() == 0)
   {
-    reason = std::string(actor->GetClassName()) +
-      (Tubes(actor) ? " (lines drawn as tubes, but no points)" : " (points drawn as spheres, but no points)");
+    reason = std::string(actor->GetClassName()) + " (" +
+      (Tubes(actor) ? "lines drawn as tubes" : "points drawn as spheres") + ", but no points)";
     this->Proxies.erase(actor);
     return nullptr;
   }
@@ -101,7 +107,7 @@ vtkActor* ImposterProxies::Update(
 void ImposterProxies::Build(vtkActor* actor, vtkActor* proxy, double radius)
 {
   vtkMapper* mapper = actor->GetMapper();
-  auto* input = vtkPolyData::SafeDownCast(mapper->GetInputDataObject(0, 0));
+  vtkPolyData* input = Input(actor);
   vtkSmartPointer<vtkMapper> shapes;
   if (Tubes(actor))
   {

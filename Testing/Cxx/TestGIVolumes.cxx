@@ -7,7 +7,6 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
-#include "vtkColorTransferFunction.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
@@ -55,19 +54,7 @@ vtkSmartPointer<vtkVolume> MakeSlab(const dvec3& lo, const dvec3& hi, double spa
   scalars->SetNumberOfTuples(image->GetNumberOfPoints());
   scalars->FillValue(1.f);
   image->GetPointData()->SetScalars(scalars);
-  vtkNew<vtkSmartVolumeMapper> mapper;
-  mapper->SetInputData(image);
-  vtkNew<vtkPiecewiseFunction> opacity;
-  opacity->AddPoint(0.0, alpha);
-  opacity->AddPoint(2.0, alpha);
-  vtkNew<vtkColorTransferFunction> color;
-  color->AddRGBPoint(0.0, rgb.x, rgb.y, rgb.z);
-  color->AddRGBPoint(2.0, rgb.x, rgb.y, rgb.z);
-  auto volume = vtkSmartPointer<vtkVolume>::New();
-  volume->SetMapper(mapper);
-  volume->GetProperty()->SetScalarOpacity(opacity);
-  volume->GetProperty()->SetColor(color);
-  volume->GetProperty()->SetScalarOpacityUnitDistance(unit);
+  vtkSmartPointer<vtkVolume> volume = voxelgi_test::UniformVolume(image, alpha, unit, rgb);
   volume->GetProperty()->SetInterpolationTypeToLinear();
   return volume;
 }

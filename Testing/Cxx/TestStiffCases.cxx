@@ -1264,17 +1264,5 @@ const voxelgi_test::Cases& Cases()
 
 int TestStiffCases(int argc, char* argv[])
 {
-  const auto& cases = Cases();
-  int result = EXIT_FAILURE;
-  if (voxelgi_test::RunNamedCase(cases, argc, argv, result))
-  {
-    return result;
-  }
-  int failures = 0;
-  for (const auto& c : cases)
-  {
-    std::cout << "case " << c.first << std::endl;
-    failures += c.second() == EXIT_SUCCESS ? 0 : 1;
-  }
-  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return voxelgi_test::RunCases(Cases(), argc, argv);
 }

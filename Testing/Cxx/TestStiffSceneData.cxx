@@ -13,7 +13,6 @@
 
 #include "vtkActor.h"
 #include "vtkCellArray.h"
-#include "vtkColorTransferFunction.h"
 #include "vtkCubeSource.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
@@ -21,7 +20,6 @@
 #include "vtkLogger.h"
 #include "vtkNew.h"
 #include "vtkOutputWindow.h"
-#include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -29,11 +27,9 @@
 #include "vtkProperty.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
-#include "vtkSmartVolumeMapper.h"
 #include "vtkSphereSource.h"
 #include "vtkStringOutputWindow.h"
 #include "vtkVolume.h"
-#include "vtkVolumeProperty.h"
 
 #include <cmath>
 #include <cstdlib>
@@ -133,20 +129,7 @@ vtkSmartPointer<vtkVolume> Volume(const int dims[3], const double spacing[3],
     values->SetValue(i, scalars.empty() ? 1.f : static_cast<float>(scalars[i % scalars.size()]));
   }
   image->GetPointData()->SetScalars(values);
-  vtkNew<vtkSmartVolumeMapper> mapper;
-  mapper->SetInputData(image);
-  vtkNew<vtkPiecewiseFunction> opacity;
-  opacity->AddPoint(0.0, alpha);
-  opacity->AddPoint(2.0, alpha);
-  vtkNew<vtkColorTransferFunction> color;
-  color->AddRGBPoint(0.0, 0.9, 0.4, 0.1);
-  color->AddRGBPoint(2.0, 0.9, 0.4, 0.1);
-  auto volume = vtkSmartPointer<vtkVolume>::New();
-  volume->SetMapper(mapper);
-  volume->GetProperty()->SetScalarOpacity(opacity);
-  volume->GetProperty()->SetColor(color);
-  volume->GetProperty()->SetScalarOpacityUnitDistance(unit);
-  return volume;
+  return voxelgi_test::UniformVolume(image, alpha, unit, glm::dvec3(0.9, 0.4, 0.1));
 }
 
 /// Whether `render` made VTK report an error (captured, not printed).
@@ -339,17 +322,5 @@ const voxelgi_test::Cases& Cases()
 
 int TestStiffSceneData(int argc, char* argv[])
 {
-  const auto& cases = Cases();
-  int result = EXIT_FAILURE;
-  if (voxelgi_test::RunNamedCase(cases, argc, argv, result))
-  {
-    return result;
-  }
-  int failures = 0;
-  for (const auto& c : cases)
-  {
-    std::cout << "case " << c.first << std::endl;
-    failures += c.second() == EXIT_SUCCESS ? 0 : 1;
-  }
-  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return voxelgi_test::RunCases(Cases(), argc, argv);
 }

@@ -6,12 +6,14 @@
 
 #include "vtkActor.h"
 #include "vtkAlgorithm.h"
+#include "vtkColorTransferFunction.h"
 #include "vtkCommand.h"
 #include "vtkCubeSource.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
+#include "vtkPiecewiseFunction.h"
 #include "vtkPlaneSource.h"
 #include "vtkPointData.h"
 #include "vtkPolyDataMapper.h"
@@ -21,10 +23,13 @@
 #include "vtkWindowToImageFilter.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkSmartVolumeMapper.h"
 #include "vtkSphereSource.h"
 #include "vtkObjectFactory.h"
 #include "vtkTesting.h"
 #include "vtkVersionMacros.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
 
 #include <algorithm>
 #include <cmath>
@@ -184,6 +189,41 @@ bool RunNamedCase(const Cases& cases, int argc, char* argv[], int& result)
     }
   }
   return false;
+}
+
+int RunCases(const Cases& cases, int argc, char* argv[])
+{
+  int result = EXIT_FAILURE;
+  if (RunNamedCase(cases, argc, argv, result))
+  {
+    return result;
+  }
+  int failures = 0;
+  for (const auto& c : cases)
+  {
+    std::cout << "case " << c.first << std::endl;
+    failures += c.second() == EXIT_SUCCESS ? 0 : 1;
+  }
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
+
+vtkSmartPointer<vtkVolume> UniformVolume(
+  vtkImageData* image, double alpha, double unit, const glm::dvec3& rgb)
+{
+  vtkNew<vtkSmartVolumeMapper> mapper;
+  mapper->SetInputData(image);
+  vtkNew<vtkPiecewiseFunction> opacity;
+  opacity->AddPoint(0.0, alpha);
+  opacity->AddPoint(2.0, alpha);
+  vtkNew<vtkColorTransferFunction> color;
+  color->AddRGBPoint(0.0, rgb.x, rgb.y, rgb.z);
+  color->AddRGBPoint(2.0, rgb.x, rgb.y, rgb.z);
+  auto volume = vtkSmartPointer<vtkVolume>::New();
+  volume->SetMapper(mapper);
+  volume->GetProperty()->SetScalarOpacity(opacity);
+  volume->GetProperty()->SetColor(color);
+  volume->GetProperty()->SetScalarOpacityUnitDistance(unit);
+  return volume;
 }
 
 bool Within(const std::string& what, double value, double goal, double asserted)

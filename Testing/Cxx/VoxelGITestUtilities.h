@@ -21,6 +21,8 @@ class vtkActor;
 class vtkAlgorithm;
 class vtkDataArray;
 class vtkFloatArray;
+class vtkImageData;
+class vtkVolume;
 
 namespace voxelgi_test
 {
@@ -61,6 +63,14 @@ using Cases = std::map<std::string, std::function<int()>>;
 /// Runs the case of `cases` that the command line names into `result` (after printing its
 /// name); false when the command line names none.
 bool RunNamedCase(const Cases& cases, int argc, char* argv[], int& result);
+
+/// The case the command line names, or every case in turn: EXIT_SUCCESS when all pass.
+int RunCases(const Cases& cases, int argc, char* argv[]);
+
+/// A volume over `image` (scalars in [0, 2]) through a vtkSmartVolumeMapper, of colour `rgb`
+/// and opacity `alpha` per `unit` of length whatever the scalar.
+vtkSmartPointer<vtkVolume> UniformVolume(
+  vtkImageData* image, double alpha, double unit, const glm::dvec3& rgb);
 
 /// Prints `value` against its goal, as met or "GOAL NOT MET", with the bound asserted today;
 /// false (printed) when it exceeds that bound.
