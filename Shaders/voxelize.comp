@@ -9,21 +9,8 @@ layout(local_size_x = 64) in;
 
 #include "voxel_triangle.glsl"
 #include "voxel_write.glsl"
+#include "scene_buffers.glsl"
 
-struct VoxelVertex
-{
-  vec3 position; // relative to the actor's shift (SceneBuffers), model units
-  uint color;    // RGBA8 scalar colour (per-vertex colouring)
-};
-layout(std430, binding = VOXELGI_SCENE_VERTEX_BINDING) readonly buffer VoxelVertexBuffer
-{
-  VoxelVertex voxelVertices[];
-};
-// Vertex indices and, for per-cell colouring, the cell's RGBA8 colour.
-layout(std430, binding = VOXELGI_SCENE_TRIANGLE_BINDING) readonly buffer VoxelTriangleBuffer
-{
-  uvec4 voxelTriangles[];
-};
 // At voxelLargeSlot: (groups, 1, 1, count), the indirect dispatch of the actor's listed
 // triangles; at voxelLargeBase: the list.
 layout(std430, binding = VOXELGI_LARGE_TRIANGLE_BINDING) buffer VoxelLargeBuffer

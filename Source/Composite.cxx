@@ -43,7 +43,7 @@ void Composite::Run(const Frame& frame)
   ScopedStage stage(*frame.Clock, stage::Composite);
   vtkTextureObject* indirect = this->Trace.GetIndirect();
   vtkTextureObject* shadowed = this->Trace.GetShadowed();
-  ComputeProgram& p = this->Program;
+  GLProgram& p = this->Program;
   p.Use(frame.Window);
   ScopedTextures inputs({ this->GBuffer.GetColor(), this->GBuffer.GetNormal(),
     this->GBuffer.GetAmbient(), this->GBuffer.GetDepth(), indirect, shadowed });

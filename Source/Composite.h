@@ -47,7 +47,7 @@ public:
 private:
   const GBufferPass& GBuffer;
   const ConeTrace& Trace;
-  ComputeProgram Program;
+  GLProgram Program;
   vtkSmartPointer<vtkTextureObject> Color; // composited linear colour
   vtkSmartPointer<vtkTextureObject> Indirect;
   vtkSmartPointer<vtkTextureObject> Scale;

@@ -41,7 +41,7 @@ void ConeSettings::Set(const Settings& settings, int resolution)
     settings.MaxTraceDistance * resolution);
 }
 
-void SetConeTracingSamplers(ComputeProgram& program, SamplerBindings& samplers,
+void SetConeTracingSamplers(GLProgram& program, SamplerBindings& samplers,
   const Volume3D& radiance, const VoxelMipmap& mips, float minLevel, float stepFactor)
 {
   static const char* const names[6] = { "voxelPosX", "voxelNegX", "voxelPosY", "voxelNegY",

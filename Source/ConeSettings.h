@@ -33,7 +33,7 @@ struct ConeSettings
 
 /// Bind the cone-tracing samplers and uniforms (Shaders/cone_tracing.glsl) of `program`,
 /// reading mip levels from `minLevel` on.
-void SetConeTracingSamplers(ComputeProgram& program, SamplerBindings& samplers,
+void SetConeTracingSamplers(GLProgram& program, SamplerBindings& samplers,
   const Volume3D& radiance, const VoxelMipmap& mips, float minLevel, float stepFactor);
 
 }

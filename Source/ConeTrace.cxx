@@ -63,7 +63,7 @@ bool ConeTrace::Prepare(const Frame& frame, std::string& error)
 
 void ConeTrace::SetUniforms(const Frame& frame)
 {
-  ComputeProgram& p = this->Program;
+  GLProgram& p = this->Program;
   const Settings& config = frame.Config;
   // NDC -> grid coordinates (composed in double, see GridFromNDC) and view normals -> grid.
   // Kept for the next frame's reprojection (after SetHistoryUniforms used the last ones).
@@ -92,7 +92,7 @@ void ConeTrace::SetUniforms(const Frame& frame)
 
 void ConeTrace::SetHistoryUniforms(const Frame& frame, bool reuse)
 {
-  ComputeProgram& p = this->Program;
+  GLProgram& p = this->Program;
   p.SetInt("temporalPhase", reuse ? this->Phase : -1);
   p.SetMat4Array("previousGridFromNDC", 1, this->PreviousGridFromNDC);
   p.SetMat4Array("previousNDCFromGrid", 1, this->PreviousNDCFromGrid);
@@ -121,7 +121,7 @@ void ConeTrace::Run(const Frame& frame)
   this->Current = 1 - this->Current;
   const TraceImages& now = this->History[this->Current];
   const TraceImages& before = this->History[1 - this->Current];
-  ComputeProgram& p = this->Program;
+  GLProgram& p = this->Program;
   p.Use(frame.Window);
   SamplerBindings samplers(frame.Window);
   SetConeTracingSamplers(

@@ -64,7 +64,7 @@ private:
 
   const GBufferPass& GBuffer;
   ConeSettings Cones;
-  ComputeProgram Program;
+  GLProgram Program;
   bool WithShadowMaps = false; // the program's variant
   std::array<TraceImages, 2> History; // this frame's and the previous frame's
   int Current = 0;

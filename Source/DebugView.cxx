@@ -29,7 +29,7 @@ bool DebugView::Prepare(const Frame& frame, std::string& error)
 void DebugView::Run(const Frame& frame)
 {
   ScopedStage stage(*frame.Clock, stage::DebugView);
-  ComputeProgram& p = this->Program;
+  GLProgram& p = this->Program;
   p.Use(frame.Window);
   const VoxelizePass& voxels = *frame.Voxelization;
   const Volume3D& radiance = frame.Lighting->GetRadiance();

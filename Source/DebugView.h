@@ -31,7 +31,7 @@ public:
   void ReleaseGraphicsResources(vtkWindow* window);
 
 private:
-  ComputeProgram Program;
+  GLProgram Program;
   vtkSmartPointer<vtkTextureObject> Image;
 };
 

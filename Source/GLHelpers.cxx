@@ -20,46 +20,60 @@
 #include <fstream>
 #include <regex>
 #include <cstring>
+#include <utility>
 #include <vector>
 
 namespace voxelgi
 {
 
 //------------------------------------------------------------------------------
-ComputeProgram::~ComputeProgram()
+GLProgram::~GLProgram()
 {
   // The owner releases GL objects with their context current (ReleaseGraphicsResources).
   assert(!this->IsAllocated());
 }
 
-bool ComputeProgram::Build(const std::string& defines, const char* source, std::string& log)
+bool GLProgram::Build(
+  const std::string& defines, const char* source, std::string& log, const char* fragment)
 {
   this->Release();
   const std::string header = "#version 430 core\n" + defines;
-  const char* parts[2] = { header.c_str(), source };
-  GLuint shader = glCreateShader(GL_COMPUTE_SHADER);
-  glShaderSource(shader, 2, parts, nullptr);
-  glCompileShader(shader);
-  GLint ok = GL_FALSE;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
   auto readLog = [&log](GLint length, auto getter) {
     std::vector<char> text(static_cast<std::size_t>(length > 1 ? length : 1), '\0');
     getter(static_cast<GLsizei>(text.size()), text.data());
     log = text.data();
   };
-  if (!ok)
-  {
-    GLint length = 0;
-    glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
-    readLog(length, [shader](GLsizei n, char* t) { glGetShaderInfoLog(shader, n, nullptr, t); });
-    log = NameShaderFiles(log);
-    glDeleteShader(shader);
-    return false;
-  }
+  const std::pair<GLenum, const char*> stages[2] = {
+    { fragment ? GL_VERTEX_SHADER : GL_COMPUTE_SHADER, source }, { GL_FRAGMENT_SHADER, fragment }
+  };
   GLuint program = glCreateProgram();
-  glAttachShader(program, shader);
+  for (const auto& stage : stages)
+  {
+    if (!stage.second)
+    {
+      continue;
+    }
+    const char* parts[2] = { header.c_str(), stage.second };
+    GLuint shader = glCreateShader(stage.first);
+    glShaderSource(shader, 2, parts, nullptr);
+    glCompileShader(shader);
+    GLint ok = GL_FALSE;
+    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+    if (!ok)
+    {
+      GLint length = 0;
+      glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
+      readLog(length, [shader](GLsizei n, char* t) { glGetShaderInfoLog(shader, n, nullptr, t); });
+      log = NameShaderFiles(log);
+      glDeleteShader(shader);
+      glDeleteProgram(program);
+      return false;
+    }
+    glAttachShader(program, shader);
+    glDeleteShader(shader); // freed with the program
+  }
   glLinkProgram(program);
-  glDeleteShader(shader);
+  GLint ok = GL_FALSE;
   glGetProgramiv(program, GL_LINK_STATUS, &ok);
   if (!ok)
   {
@@ -74,11 +88,12 @@ bool ComputeProgram::Build(const std::string& defines, const char* source, std::
   return true;
 }
 
-bool ComputeProgram::BuildOnce(
-  const char* source, const char* what, std::string& error, const std::string& defines)
+bool GLProgram::BuildOnce(const char* source, const char* what, std::string& error,
+  const std::string& defines, const char* fragment)
 {
   std::string log;
-  if ((this->IsReady() && this->Defines == defines) || this->Build(defines, source, log))
+  if ((this->IsReady() && this->Defines == defines) ||
+    this->Build(defines, source, log, fragment))
   {
     return true;
   }
@@ -86,66 +101,66 @@ bool ComputeProgram::BuildOnce(
   return false;
 }
 
-void ComputeProgram::Use(vtkOpenGLRenderWindow* renWin)
+void GLProgram::Use(vtkOpenGLRenderWindow* renWin)
 {
   renWin->GetShaderCache()->ReleaseCurrentShader();
   glUseProgram(this->Handle);
 }
 
-void ComputeProgram::SetInt(const char* name, int value)
+void GLProgram::SetInt(const char* name, int value)
 {
   glUniform1i(glGetUniformLocation(this->Handle, name), value);
 }
 
-void ComputeProgram::SetUInt(const char* name, unsigned int value)
+void GLProgram::SetUInt(const char* name, unsigned int value)
 {
   glUniform1ui(glGetUniformLocation(this->Handle, name), value);
 }
 
-void ComputeProgram::SetFloat(const char* name, float value)
+void GLProgram::SetFloat(const char* name, float value)
 {
   glUniform1f(glGetUniformLocation(this->Handle, name), value);
 }
 
-void ComputeProgram::SetVec3Array(const char* name, int count, const float* values)
+void GLProgram::SetVec3Array(const char* name, int count, const float* values)
 {
   glUniform3fv(glGetUniformLocation(this->Handle, name), count, values);
 }
 
-void ComputeProgram::SetVec2(const char* name, float x, float y)
+void GLProgram::SetVec2(const char* name, float x, float y)
 {
   glUniform2f(glGetUniformLocation(this->Handle, name), x, y);
 }
 
-void ComputeProgram::SetVec4(const char* name, const float* values)
+void GLProgram::SetVec4(const char* name, const float* values)
 {
   glUniform4fv(glGetUniformLocation(this->Handle, name), 1, values);
 }
 
-void ComputeProgram::SetMat3(const char* name, const float* values)
+void GLProgram::SetMat3(const char* name, const float* values)
 {
   glUniformMatrix3fv(glGetUniformLocation(this->Handle, name), 1, GL_FALSE, values);
 }
 
-void ComputeProgram::SetMat4Array(const char* name, int count, const float* values)
+void GLProgram::SetMat4Array(const char* name, int count, const float* values)
 {
   glUniformMatrix4fv(glGetUniformLocation(this->Handle, name), count, GL_FALSE, values);
 }
 
-void ComputeProgram::DispatchCube(int n, int localSize)
+void GLProgram::DispatchCube(int n, int localSize)
 {
   const GLuint groups = static_cast<GLuint>((n + localSize - 1) / localSize);
   glDispatchCompute(groups, groups, groups);
   glUseProgram(0);
 }
 
-void ComputeProgram::DispatchGroups(unsigned int x, unsigned int y, unsigned int z)
+void GLProgram::DispatchGroups(unsigned int x, unsigned int y, unsigned int z)
 {
   glDispatchCompute(x, y, z);
   glUseProgram(0);
 }
 
-void ComputeProgram::DispatchIndirect(const StorageBuffer& arguments, std::size_t offset)
+void GLProgram::DispatchIndirect(const StorageBuffer& arguments, std::size_t offset)
 {
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, arguments.GetHandle());
   glDispatchComputeIndirect(static_cast<GLintptr>(offset));
@@ -153,14 +168,14 @@ void ComputeProgram::DispatchIndirect(const StorageBuffer& arguments, std::size_
   glUseProgram(0);
 }
 
-void ComputeProgram::DispatchImage(int width, int height, int tile)
+void GLProgram::DispatchImage(int width, int height, int tile)
 {
   glDispatchCompute(static_cast<GLuint>((width + tile - 1) / tile),
     static_cast<GLuint>((height + tile - 1) / tile), 1);
   glUseProgram(0);
 }
 
-void ComputeProgram::Release()
+void GLProgram::Release()
 {
   if (this->Handle)
   {

@@ -30,21 +30,25 @@ namespace voxelgi
 {
 class StorageBuffer;
 
-/// A compute program built from one GLSL source (the `#version` line is prepended).
-class ComputeProgram
+/// A GL program: one compute shader, or a vertex and a fragment shader, each built from one
+/// GLSL source (the `#version` line and the defines are prepended).
+class GLProgram
 {
 public:
-  ComputeProgram() = default;
-  ~ComputeProgram();
-  ComputeProgram(const ComputeProgram&) = delete;
-  ComputeProgram& operator=(const ComputeProgram&) = delete;
+  GLProgram() = default;
+  ~GLProgram();
+  GLProgram(const GLProgram&) = delete;
+  GLProgram& operator=(const GLProgram&) = delete;
 
-  /// Compile and link `defines` + `source`; on failure returns false and fills `log`.
-  bool Build(const std::string& defines, const char* source, std::string& log);
-  /// Build `defines` + `source` unless the program is ready with those defines; on failure
-  /// `error` says that the `what` shader failed, with the compiler's log.
-  bool BuildOnce(
-    const char* source, const char* what, std::string& error, const std::string& defines = "");
+  /// Compile and link `defines` + `source` as a compute shader, or with a `fragment` source
+  /// as a vertex and a fragment shader; on failure returns false and fills `log`.
+  bool Build(const std::string& defines, const char* source, std::string& log,
+    const char* fragment = nullptr);
+  /// Build `defines` + `source` (and `fragment`, as in Build) unless the program is ready
+  /// with those defines; on failure `error` says that the `what` shader failed, with the
+  /// compiler's log.
+  bool BuildOnce(const char* source, const char* what, std::string& error,
+    const std::string& defines = "", const char* fragment = nullptr);
   bool IsReady() const { return this->Handle != 0; }
   bool IsAllocated() const { return this->Handle != 0; }
 

@@ -63,7 +63,7 @@ void LightVoxels::Run(const Frame& frame)
   const int normal = samplers.Add(voxels.GetNormal());
   const int emission =
     samplers.Add(voxels.HasEmission() ? voxels.GetEmission() : voxels.GetAlbedo());
-  ComputeProgram& p = this->Program;
+  GLProgram& p = this->Program;
   p.Use(frame.Window);
   p.SetInt("voxelAlbedo", albedo);
   p.SetInt("voxelNormal", normal);

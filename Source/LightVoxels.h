@@ -53,7 +53,7 @@ private:
   const ShadowMaps& Shadows;
   Volume3D Radiance;
   Volume3D Direct; // kept only when bouncing
-  ComputeProgram Program;
+  GLProgram Program;
   bool WithShadowMaps = false; // the program's variant
   bool VoxelShadows = true;
 };

@@ -342,6 +342,7 @@ void SceneScan::Compare(
       break;
     }
     const bool changed = record.Signature > old.Signature || record.Emission != old.Emission;
+    record.Revision = changed ? 0 : old.Revision;
     if (record.UserDynamic != old.UserDynamic)
     {
       full = true; // the static/dynamic split itself changed
@@ -415,6 +416,12 @@ bool SceneScan::Scan(vtkRenderer* renderer, const Settings& settings, Ranks& ran
   found.Collected = this->Collect(
     renderer, inRender, ranks.Distributed(), records, volumes, found.Bounds, messages.Warnings);
   this->Compare(records, settings.AutoDynamic, found.Full, found.Dynamic);
+  // Invalidate() and updates every frame stand for changes the scan cannot see.
+  const bool unseen = this->InvalidateRequested || settings.UpdatePolicy == UPDATE_EVERY_FRAME;
+  for (ActorRecord& record : records)
+  {
+    record.Revision = record.Revision && !unseen ? record.Revision : ++this->Revisions;
+  }
   // A volume that changed is resampled and merged again by the resolve: the actors' voxels
   // stay.
   found.Dynamic = found.Dynamic || volumes != this->Volumes;

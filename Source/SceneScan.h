@@ -22,6 +22,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <map>
 #include <set>
 #include <string>
@@ -45,6 +46,9 @@ struct ActorRecord
   std::array<double, 3> Emission{ { 0.0, 0.0, 0.0 } };
   bool UserDynamic = false;
   bool Dynamic = false; // user choice, or changed after voxelization (AutoDynamic)
+  // Which scan last saw its data, mapper or actor change (a new one where the scan cannot
+  // tell): stages that keep results per actor compare it (ShadowMaps).
+  std::uint64_t Revision = 0;
 };
 
 /// What the scan has to tell the user; the pass reports it.
@@ -138,6 +142,7 @@ private:
   bool BuiltEmission = false;
   bool BuiltHardware = false;
   bool BuiltCompute = false;
+  std::uint64_t Revisions = 0; // the last ActorRecord::Revision given
   bool InvalidateRequested = false;
   int FramesSinceUpdate = 0;
   bool AnySpecular = false;

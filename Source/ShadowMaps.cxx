@@ -4,6 +4,7 @@
 #include "LightBlock.h"
 #include "VoxelGrid.h"
 #include "StageIds.h"
+#include "VoxelizePass.h"
 
 #include "vtkActor.h"
 
@@ -20,6 +21,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 #include <vector>
 
@@ -166,7 +168,12 @@ bool ShadowMaps::Prepare(const Frame& frame, std::string& error, std::string& no
   if (count == 0)
   {
     this->Maps.Release();
+    this->Drawn.clear();
     return true;
+  }
+  if (!this->Depth.Prepare(error))
+  {
+    return false;
   }
   if (!this->Allot(frame.Config.ShadowMapResolution, count, note))
   {
@@ -194,6 +201,7 @@ bool ShadowMaps::Allot(int size, int layers, std::string& note)
   }
   this->Wanted[0] = size;
   this->Wanted[1] = layers;
+  this->Drawn.assign(static_cast<std::size_t>(layers), LayerKey{}); // new maps hold nothing
   // The maps degrade instead of turning GI off: halved until they fit the memory the GL
   // reports free (counting what the old maps hold) and GL allocates them.
   std::string source;
@@ -232,7 +240,7 @@ bool ShadowMaps::Allot(int size, int layers, std::string& note)
   return this->Granted > 0;
 }
 
-void ShadowMaps::Bind(ComputeProgram& program, SamplerBindings& samplers) const
+void ShadowMaps::Bind(GLProgram& program, SamplerBindings& samplers) const
 {
   program.SetInt("shadowMaps", samplers.Add(this->Maps));
   this->Buffer.BindUniform(VOXELGI_SHADOW_BLOCK_BINDING);
@@ -245,7 +253,7 @@ void ShadowMaps::Run(const Frame& frame)
   {
     return;
   }
-  ScopedStage stage(*frame.Clock, stage::ShadowMaps);
+  std::optional<ScopedStage> stage; // timed from the first layer drawn
   // The casters draw through a renderer of ours whose camera is the light's: the user's
   // renderer and camera are left alone (see ViewRenderer).
   vtkRenderer* renderer = this->View.Attach(frame.Window);
@@ -282,19 +290,9 @@ void ShadowMaps::Run(const Frame& frame)
         const glm::dvec2 texel = AimLightCamera(camera, used[l], grid, face, size);
         this->Data.shadowTexels[l][0] = static_cast<float>(texel.x);
         this->Data.shadowTexels[l][1] = static_cast<float>(texel.y);
-        ostate->vtkglBindFramebuffer(GL_FRAMEBUFFER, this->Maps.PrepareLayer(first + face));
-        ostate->vtkglClearDepth(1.0);
-        ostate->vtkglClear(GL_DEPTH_BUFFER_BIT);
         vtkNew<vtkMatrix4x4> clipFromWorld;
         clipFromWorld->DeepCopy(camera->GetCompositeProjectionTransformMatrix(1.0, -1, 1));
-        // Each draw costs CPU time in VTK's mapper: a cube face draws only the actors it sees.
-        for (const ActorRecord& record : *frame.Actors)
-        {
-          if (record.Actor && !OutsideView(record.Actor->GetBounds(), clipFromWorld))
-          {
-            this->Copies.Draw(record.Actor, renderer);
-          }
-        }
+        this->DrawLayer(frame, first + face, clipFromWorld, renderer, stage);
         vtkNew<vtkMatrix4x4> clipFromGrid;
         vtkMatrix4x4::Multiply4x4(clipFromWorld, worldFromGrid, clipFromGrid);
         glsl::mat4& matrix = this->Data.shadowMatrices[first + face];
@@ -311,6 +309,67 @@ void ShadowMaps::Run(const Frame& frame)
   ostate->PopFramebufferBindings();
   this->Buffer.Upload(&this->Data, sizeof(Block));
   this->Copies.Retain(*frame.Actors, frame.Window);
+}
+
+void ShadowMaps::DrawLayer(const Frame& frame, int layer, vtkMatrix4x4* clipFromWorld,
+  vtkRenderer* renderer, std::optional<ScopedStage>& stage)
+{
+  // The casters a layer sees: each draw through a mapper costs CPU time, and a cube face
+  // sees only part of the scene.
+  LayerKey key;
+  std::copy_n(&clipFromWorld->Element[0][0], 16, key.ClipFromWorld.begin());
+  for (const ActorRecord& record : *frame.Actors)
+  {
+    if (record.Actor && !OutsideView(record.Actor->GetBounds(), clipFromWorld))
+    {
+      // The matrix too: a follower's turns with the camera without a change to its data.
+      LayerKey::Caster caster{ record.Actor, record.Revision, {} };
+      const vtkMatrix4x4* matrix = record.Actor->GetMatrix();
+      std::copy_n(&matrix->Element[0][0], 16, caster.Matrix.begin());
+      key.Casters.push_back(caster);
+    }
+  }
+  if (this->Drawn.size() <= static_cast<std::size_t>(layer))
+  {
+    this->Drawn.resize(static_cast<std::size_t>(layer) + 1);
+  }
+  LayerKey& drawn = this->Drawn[static_cast<std::size_t>(layer)];
+  if (key == drawn)
+  {
+    return; // its depth is still that view of those casters
+  }
+  if (!stage)
+  {
+    stage.emplace(*frame.Clock, stage::ShadowMaps);
+  }
+  vtkOpenGLState* ostate = frame.Window->GetState();
+  ostate->vtkglBindFramebuffer(GL_FRAMEBUFFER, this->Maps.PrepareLayer(layer));
+  ostate->vtkglClearDepth(1.0);
+  ostate->vtkglClear(GL_DEPTH_BUFFER_BIT);
+  std::vector<std::pair<vtkActor*, const SceneBuffers::Entry*>> resident;
+  for (const LayerKey::Caster& caster : key.Casters)
+  {
+    const SceneBuffers::Entry* buffers = this->Voxels.Resident(frame, caster.Actor);
+    if (buffers)
+    {
+      resident.emplace_back(caster.Actor, buffers);
+    }
+    else
+    {
+      this->Copies.Draw(caster.Actor, renderer);
+    }
+  }
+  if (!resident.empty())
+  {
+    ostate->vtkglDisable(GL_CULL_FACE);
+    this->Depth.Begin(frame.Window);
+    for (const auto& caster : resident)
+    {
+      this->Depth.Draw(caster.first, *caster.second, clipFromWorld);
+    }
+    this->Depth.End();
+  }
+  drawn = std::move(key);
 }
 
 }

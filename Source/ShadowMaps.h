@@ -1,7 +1,9 @@
 /**
  * ShadowMaps stage (shadow_maps.glsl reads them): a depth map per directional or spot light
- * and six (a cube) per point light, rendered from the light by VTK's own mappers (the actors
- * that are voxelized), and the matrices from grid coordinates to each map's clip space, in
+ * and six (a cube) per point light, rendered from the light with the voxelized actors as
+ * casters (their GPU-resident triangles where compute voxelization reads them: ShadowDepth;
+ * the others through copies of their mappers); a layer whose view and casters did not change
+ * since it was drawn is kept. Also the matrices from grid coordinates to each map's clip space, in
  * the `VoxelShadowBlock` uniform block (Shaders/shadow_block.h). The voxel lighting and the
  * pixels' shadows (ConeTrace) look them up. Headlights have none: their shadows are hidden
  * behind what casts them.
@@ -9,27 +11,43 @@
 #ifndef VoxelGIShadowMaps_h
 #define VoxelGIShadowMaps_h
 
+#include "Frame.h" // for ScopedStage
 #include "GLHelpers.h"
 #include "MapperCopies.h"
+#include "ShadowDepth.h"
 #include "ViewRenderer.h" // for ViewRenderer
 #include "shader_interface.h"
 #include "shadow_block.h"
 
+#include <array>
 #include <cstddef>
+#include <cstdint>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
+class vtkActor;
 class vtkLight;
+class vtkMatrix4x4;
+class vtkRenderer;
 class vtkWindow;
 
 namespace voxelgi
 {
 struct Frame;
 class LightBlock;
+class VoxelizePass;
 
 class ShadowMaps
 {
 public:
+  /// `voxels` keeps the actors' GPU-resident triangles.
+  explicit ShadowMaps(VoxelizePass& voxels)
+    : Voxels(voxels)
+  {
+  }
+
   static constexpr int MaxLights = VOXELGI_MAX_LIGHTS;
   static constexpr int MaxLayers = VOXELGI_MAX_SHADOW_LAYERS;
 
@@ -46,15 +64,17 @@ public:
   bool HasMaps() const { return this->Maps.Layers() > 0; }
   /// Bind the block at VOXELGI_SHADOW_BLOCK_BINDING and the maps to `program`'s (in use)
   /// `shadowMaps` sampler.
-  void Bind(ComputeProgram& program, SamplerBindings& samplers) const;
+  void Bind(GLProgram& program, SamplerBindings& samplers) const;
 
   ShadowMapArray Maps;
   void ReleaseGraphicsResources(vtkWindow* window)
   {
     this->Wanted[0] = this->Wanted[1] = this->Granted = 0;
     this->Maps.Release();
+    this->Drawn.clear();
     this->Buffer.Release();
     this->Copies.ReleaseGraphicsResources(window);
+    this->Depth.ReleaseGraphicsResources();
     this->View.Release();
   }
 
@@ -75,8 +95,38 @@ private:
   int Wanted[2] = { 0, 0 }; // the size and count last asked for
   int Granted = 0;          // the size allocated for them
 
+  /// What a layer was drawn from: its view and its casters, with their revisions (a change
+  /// of their data the scan saw: ActorRecord::Revision) and matrices.
+  struct LayerKey
+  {
+    struct Caster
+    {
+      vtkActor* Actor;
+      std::uint64_t Revision;
+      std::array<double, 16> Matrix;
+      bool operator==(const Caster& other) const
+      {
+        return this->Actor == other.Actor && this->Revision == other.Revision &&
+          this->Matrix == other.Matrix;
+      }
+    };
+    std::array<double, 16> ClipFromWorld{};
+    std::vector<Caster> Casters;
+    bool operator==(const LayerKey& other) const
+    {
+      return this->ClipFromWorld == other.ClipFromWorld && this->Casters == other.Casters;
+    }
+  };
+  /// Draw `layer` from `clipFromWorld` unless it holds that view of the same casters; the
+  /// first layer drawn starts the stage's clock.
+  void DrawLayer(const Frame& frame, int layer, vtkMatrix4x4* clipFromWorld,
+    vtkRenderer* renderer, std::optional<ScopedStage>& stage);
+
+  VoxelizePass& Voxels;
   ViewRenderer View; // draws through each light's camera
   MapperCopies Copies; // depth-only draws never switch the user's mappers
+  ShadowDepth Depth;   // the actors with GPU-resident triangles
+  std::vector<LayerKey> Drawn; // per layer of the allocated maps
   Block Data{};
   StorageBuffer Buffer;
 };

@@ -78,7 +78,7 @@ private:
   void Resample(const Frame& frame, vtkVolume* volume, Source& source, bool first);
 
   Volume3D Grid;
-  ComputeProgram Program;
+  GLProgram Program;
   std::vector<Source> Sources;
   std::vector<VolumeRecord> Built; // what the grid holds
   VoxelGrid BuiltGrid;

@@ -48,7 +48,7 @@ void VoxelBounce::Run(const Frame& frame)
 void VoxelBounce::Bounce(const Frame& frame)
 {
   SamplerBindings samplers(frame.Window);
-  ComputeProgram& p = this->Program;
+  GLProgram& p = this->Program;
   p.Use(frame.Window);
   // The bounce writes the radiance volume, so it reads only the mipmaps (level >= 1).
   Volume3D& radiance = this->Lighting.GetRadiance();

@@ -49,7 +49,7 @@ private:
   LightVoxels& Lighting;
   VoxelMipmap& Mipmap;
   ConeSettings Cones;
-  ComputeProgram Program;
+  GLProgram Program;
   Volume3D Incident;
 };
 

@@ -47,7 +47,7 @@ public:
 private:
   LightVoxels& Lighting;
   bool Anisotropic = true;
-  ComputeProgram Program;
+  GLProgram Program;
 };
 
 /// Number of mip levels of a cube of `resolution` voxels down to one voxel.

@@ -27,7 +27,7 @@ struct VoxelStages
 {
   vtkNew<VoxelizePass> Voxelize;
   VoxelGridBlock GridBlock;
-  ShadowMaps Shadows;
+  ShadowMaps Shadows{ *Voxelize };
   LightVoxels Lighting{ *Voxelize, Shadows };
   VoxelMipmap Mipmap{ Lighting };
   VoxelBounce Bounce{ *Voxelize, Lighting, Mipmap };

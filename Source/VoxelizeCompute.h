@@ -47,7 +47,7 @@ public:
   void ReleaseGraphicsResources();
 
 private:
-  ComputeProgram Program;
+  GLProgram Program;
   SceneBuffers Buffers;
   StorageBuffer Large; // per item (groups, 1, 1, count), then the items' lists
 };

@@ -192,8 +192,7 @@ void VoxelizePass::Run(const Frame& frame)
     {
       continue; // its voxels are kept
     }
-    const SceneBuffers::Entry* buffers =
-      frame.Config.ComputeVoxelization ? this->Compute.Read(record.Actor) : nullptr;
+    const SceneBuffers::Entry* buffers = this->Resident(frame, record.Actor);
     if (buffers)
     {
       (record.Dynamic ? dynamicItems : staticItems).push_back({ record.Actor, buffers, record.Emission });
@@ -252,6 +251,11 @@ void VoxelizePass::Run(const Frame& frame)
   this->MergeSums(frame);
   this->Volumes.Run(frame);
   this->Resolve(frame);
+}
+
+const SceneBuffers::Entry* VoxelizePass::Resident(const Frame& frame, vtkActor* actor)
+{
+  return frame.Config.ComputeVoxelization ? this->Compute.Read(actor) : nullptr;
 }
 
 void VoxelizePass::MergeFlags(const Frame& frame)

@@ -30,6 +30,7 @@
 #include <unordered_map>
 #include <vector>
 
+class vtkActor;
 class vtkCamera;
 class vtkProp;
 
@@ -62,6 +63,9 @@ public:
   std::size_t MemoryBytes() const;
   /// The part of MemoryBytes() that only emissive scenes need.
   std::size_t EmissionBytes() const;
+  /// `actor`'s GPU-resident triangles, brought up to date, where the frame's settings let
+  /// compute voxelization read it; null when its mapper has to draw it (context current).
+  const SceneBuffers::Entry* Resident(const Frame& frame, vtkActor* actor);
   /// The actors' triangles kept for compute voxelization and the volumes' voxels and
   /// textures (not in MemoryBytes(): they follow the scene, not the settings).
   std::size_t SceneBytes() const
@@ -129,8 +133,8 @@ private:
   Volume3D AlbedoVolume;
   Volume3D NormalVolume;
   Volume3D EmissionVolume;
-  ComputeProgram ClearProgram;
-  ComputeProgram ResolveProgram;
+  GLProgram ClearProgram;
+  GLProgram ResolveProgram;
   EmptyFramebuffer Framebuffer;
   ViewRenderer View; // draws through the grid camera
   MapperCopies Copies; // draw the actors with this pass's shader code only

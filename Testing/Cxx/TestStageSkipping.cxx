@@ -58,8 +58,8 @@ using voxelgi_test::StagesRan;
 
 const std::string Trace = "GBuffer,ConeTrace,Composite,Present";
 const std::string Light = "LightVoxels,Mipmap,Bounce," + Trace;
-// The directional scene light has a shadow map (LightOcclusion ShadowMaps): every relight
-// redraws it.
+// The directional scene light has a shadow map (LightOcclusion ShadowMaps): a relight redraws
+// it when the light turned or what it sees changed.
 const std::string Relight = "ShadowMaps," + Light;
 // A headlight's relight (no shadow map: what it lights hides its shadows): one bounce
 // continues from the last solution.
@@ -211,7 +211,8 @@ int TestStageSkipping(int, char*[])
   const Case cases[] = {
     { "nothing changed", [] {}, "Scan,Present" },
     { "camera moved", [&] { renderer->GetActiveCamera()->Azimuth(10.0); }, "Scan," + Trace },
-    { "light changed", [&] { light->SetIntensity(0.7); }, "Scan," + Relight },
+    { "light changed", [&] { light->SetIntensity(0.7); }, "Scan," + Light }, // the map kept
+    { "light moved", [&] { light->SetPosition(1.5, 4.0, 2.0); }, "Scan," + Relight },
     { "dynamic actor moved", [&] { cube->AddPosition(0.0, 0.0, 1.0); },
       "Scan,Clear,VoxelizeDynamic,Resolve," + Relight },
     { "bounds grew beyond the grid", [&] { cube->AddPosition(5.0, 0.0, 0.0); }, Full },

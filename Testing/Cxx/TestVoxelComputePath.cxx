@@ -12,7 +12,9 @@
 // static voxels kept, the block's written again), changing (a sphere whose tessellation, and
 // so its number of triangles, changes at every frame, as time-varying data does). Both paths
 // run in one process; the compute run must hold triangle buffers (RESOURCE_SCENE_BUFFERS) and
-// the raster run none.
+// the raster run none. The lit voxels must agree too: the compute run draws the scene lights'
+// shadow maps from the same resident triangles (ShadowDepth), the raster run through copies
+// of the mappers.
 #include "VoxelGITestUtilities.h"
 #include "vtkVoxelGIPass.h"
 #include "vtkVoxelGIScenes.h"
@@ -50,6 +52,7 @@ struct Volumes
   std::vector<double> Albedo; // RGBA per voxel
   std::vector<double> Normal;
   std::vector<double> Emission;
+  std::vector<double> Radiance; // lit: the scene lights' shadow maps drawn from each path
   unsigned long long SceneBytes = 0;
 };
 
@@ -181,6 +184,7 @@ bool Voxelize(const std::string& which, bool compute, Volumes& out)
   out.Albedo = Values(view.GI, vtkVoxelGIPass::VOLUME_ALBEDO);
   out.Normal = Values(view.GI, vtkVoxelGIPass::VOLUME_NORMAL);
   out.Emission = Values(view.GI, vtkVoxelGIPass::VOLUME_EMISSION);
+  out.Radiance = Values(view.GI, vtkVoxelGIPass::VOLUME_RADIANCE);
   out.SceneBytes = view.GI->GetAllocatedBytes(vtkVoxelGIPass::RESOURCE_SCENE_BUFFERS);
   renderer->SetPass(nullptr);
   view.GI->ReleaseGraphicsResources(view.Window);
@@ -253,6 +257,22 @@ int TestVoxelComputePath(int argc, char* argv[])
     "albedo " << albedoMean << " levels off on average, " << albedoMax << " at most");
   VOXELGI_CHECK(normalMean <= 0.05 && normalMax <= 2.0,
     "normal " << normalMean << " levels off on average, " << normalMax << " at most");
+  // The lit voxels: shadow maps drawn from the resident triangles (compute) and through
+  // copies of the mappers (raster) must shadow the same voxels.
+  VOXELGI_CHECK(compute.Radiance.size() == raster.Radiance.size() && !raster.Radiance.empty(),
+    "no radiance volume");
+  double radianceMean = 0.0;
+  double radianceMax = 0.0;
+  Differences(compute, raster, &Volumes::Radiance, radianceMean, radianceMax);
+  double radianceSum = 0.0;
+  for (double value : raster.Radiance)
+  {
+    radianceSum += value;
+  }
+  const double radianceLevel = radianceSum / raster.Radiance.size();
+  std::cout << "radiance: " << radianceMean << " mean, " << radianceMax
+            << " largest difference; mean value " << radianceLevel << std::endl;
+  VOXELGI_CHECK(radianceMean <= 0.01 * radianceLevel, "radiance differs by " << radianceMean << " on average");
   if (which == "emissive")
   {
     VOXELGI_CHECK(!compute.Emission.empty() && compute.Emission.size() == raster.Emission.size(),

@@ -1,0 +1,4 @@
+// Shadow maps hold depth alone (shadow_depth.vert).
+void main()
+{
+}
