@@ -1,5 +1,5 @@
-// An actor's GPU-resident triangles (SceneBuffers), as compute voxelization (voxelize.comp)
-// and the shadow maps' depth (shadow_depth.vert) read them.
+// An actor's GPU-resident vertices (SceneBuffers), as compute voxelization (voxelize.comp) and
+// the shadow maps' depth (shadow_depth.vert) read them.
 struct VoxelVertex
 {
   vec3 position; // relative to the actor's shift (SceneBuffers), model units
@@ -8,9 +8,4 @@ struct VoxelVertex
 layout(std430, binding = VOXELGI_SCENE_VERTEX_BINDING) readonly buffer VoxelVertexBuffer
 {
   VoxelVertex voxelVertices[];
-};
-// Vertex indices and, for per-cell colouring, the cell's RGBA8 colour.
-layout(std430, binding = VOXELGI_SCENE_TRIANGLE_BINDING) readonly buffer VoxelTriangleBuffer
-{
-  uvec4 voxelTriangles[];
 };

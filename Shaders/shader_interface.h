@@ -29,11 +29,13 @@
    ones, and the clear and the bounce run on those alone (an indirect dispatch). */
 #define VOXELGI_BRICK_LIST_BINDING 11
 
-/* Shader storage bindings of compute voxelization (voxelize.comp): an actor's vertices and
-   triangles (SceneBuffers), and the list of its triangles that cover many pixel columns. */
+/* Shader storage bindings of compute voxelization (voxelize.comp): an actor's vertices,
+   triangles' vertex indices and cell colours (SceneBuffers), and the list of its triangles
+   that cover many pixel columns. */
 #define VOXELGI_SCENE_VERTEX_BINDING 12
-#define VOXELGI_SCENE_TRIANGLE_BINDING 13
+#define VOXELGI_SCENE_INDEX_BINDING 13
 #define VOXELGI_LARGE_TRIANGLE_BINDING 14
+#define VOXELGI_SCENE_CELL_COLOR_BINDING 15
 
 /* Image units of the voxelization stage. */
 #define VOXELGI_FLAG_IMAGE_UNIT 0

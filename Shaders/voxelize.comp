@@ -11,6 +11,16 @@ layout(local_size_x = 64) in;
 #include "voxel_write.glsl"
 #include "scene_buffers.glsl"
 
+// Three vertex indices per triangle; for per-cell colouring, each triangle's RGBA8 colour.
+layout(std430, binding = VOXELGI_SCENE_INDEX_BINDING) readonly buffer VoxelIndexBuffer
+{
+  uint voxelIndices[];
+};
+layout(std430, binding = VOXELGI_SCENE_CELL_COLOR_BINDING) readonly buffer VoxelCellColorBuffer
+{
+  uint voxelCellColors[];
+};
+
 // At voxelLargeSlot: (groups, 1, 1, count), the indirect dispatch of the actor's listed
 // triangles; at voxelLargeBase: the list.
 layout(std430, binding = VOXELGI_LARGE_TRIANGLE_BINDING) buffer VoxelLargeBuffer
@@ -32,7 +42,8 @@ const uint voxelMaxGroups = 65535u;
 
 bool voxelLoad(uint index, out VoxelTriangle t, out vec3 q[3], out float area2, out uvec4 tri)
 {
-  tri = voxelTriangles[index];
+  tri = uvec4(voxelIndices[3u * index], voxelIndices[3u * index + 1u],
+    voxelIndices[3u * index + 2u], voxelColorMode == 2 ? voxelCellColors[index] : 0u);
   vec3 p[3];
   for (int k = 0; k < 3; ++k)
   {

@@ -88,15 +88,15 @@ std::vector<std::size_t> BlockStarts(const Offset* offsets, vtkIdType cells)
   return first;
 }
 
-/// Writes the n - 2 triangles of a cell of n points at `t` as VTK's index buffers order them:
-/// polygons as fans from their first point, strips with every other triangle turned so that
-/// all face one way. False when a triangle has an index beyond the points (marked Damaged).
+/// Writes the n - 2 triangles of a cell of n points at `t` (three indices each) as VTK's index
+/// buffers order them: polygons as fans from their first point, strips with every other
+/// triangle turned so that all face one way. False when a triangle has an index beyond the
+/// points (marked Damaged).
 template <typename Id>
-bool WriteCell(const Id* cell, vtkIdType n, bool strips, vtkIdType points, std::uint32_t color,
-  std::uint32_t* t)
+bool WriteCell(const Id* cell, vtkIdType n, bool strips, vtkIdType points, std::uint32_t* t)
 {
   bool whole = true;
-  for (vtkIdType k = 2; k < n; ++k, t += 4)
+  for (vtkIdType k = 2; k < n; ++k, t += 3)
   {
     const vtkIdType i = k - 2;
     const vtkIdType a = strips ? cell[i] : cell[0];
@@ -111,24 +111,31 @@ bool WriteCell(const Id* cell, vtkIdType n, bool strips, vtkIdType points, std::
     t[0] = static_cast<std::uint32_t>(a);
     t[1] = static_cast<std::uint32_t>(b);
     t[2] = static_cast<std::uint32_t>(d);
-    t[3] = color;
   }
   return whole;
 }
 
-/// Removes the triangles marked Damaged from `base` on, keeping the order of the rest.
-void RemoveDamaged(std::vector<std::uint32_t>& triangles, std::size_t base)
+/// Removes the triangles marked Damaged from triangle `base` on (and their cell colours, where
+/// there are), keeping the order of the rest.
+void RemoveDamaged(TriangleArrays& arrays, std::size_t base)
 {
+  std::vector<std::uint32_t>& indices = arrays.Indices;
+  std::vector<std::uint32_t>& colors = arrays.CellColors;
   std::size_t kept = base;
-  for (std::size_t t = base; t < triangles.size(); t += 4)
+  for (std::size_t t = base; 3 * t < indices.size(); ++t)
   {
-    if (triangles[t] != Damaged)
+    if (indices[3 * t] != Damaged)
     {
-      std::copy_n(triangles.begin() + t, 4, triangles.begin() + kept);
-      kept += 4;
+      std::copy_n(indices.begin() + 3 * t, 3, indices.begin() + 3 * kept);
+      if (!colors.empty())
+      {
+        colors[kept] = colors[t];
+      }
+      ++kept;
     }
   }
-  triangles.resize(kept);
+  indices.resize(3 * kept);
+  colors.resize(colors.empty() ? 0 : kept);
 }
 
 /// Appends the triangles of a cell array (cell ids from `firstCell`), read straight from its
@@ -137,29 +144,37 @@ struct TriangleWriter
 {
   template <typename State>
   void operator()(State& state, bool strips, vtkIdType firstCell, vtkIdType points,
-    const unsigned char* cellColors, std::vector<std::uint32_t>& triangles) const
+    const unsigned char* cellColors, TriangleArrays& arrays) const
   {
     const vtkIdType cells = state.GetNumberOfCells();
     const auto* offsets = state.GetOffsets()->GetPointer(0);
     const auto* ids = state.GetConnectivity()->GetPointer(0);
     const std::vector<std::size_t> first = BlockStarts(offsets, cells);
-    const std::size_t base = triangles.size();
-    triangles.resize(base + 4 * first.back());
-    std::uint32_t* out = triangles.data() + base;
+    const std::size_t base = arrays.Indices.size() / 3;
+    arrays.Indices.resize(3 * (base + first.back()));
+    if (cellColors)
+    {
+      arrays.CellColors.resize(base + first.back());
+    }
+    std::uint32_t* out = arrays.Indices.data() + 3 * base;
+    std::uint32_t* outColors = cellColors ? arrays.CellColors.data() + base : nullptr;
     std::atomic<bool> damaged{ false };
     const vtkIdType blocks = static_cast<vtkIdType>(first.size()) - 1;
     vtkSMPTools::For(0, blocks, [&](vtkIdType begin, vtkIdType end) {
       bool whole = true;
       for (vtkIdType block = begin; block < end; ++block)
       {
-        std::uint32_t* t = out + 4 * first[block];
+        std::size_t t = first[block];
         for (vtkIdType c = block * BlockCells; c < std::min(cells, (block + 1) * BlockCells); ++c)
         {
           const vtkIdType n = static_cast<vtkIdType>(offsets[c + 1] - offsets[c]);
-          const std::uint32_t color =
-            cellColors ? PackColor(cellColors + 4 * (firstCell + c)) : 0u;
-          whole = WriteCell(ids + offsets[c], n, strips, points, color, t) && whole;
-          t += 4 * std::max<vtkIdType>(n - 2, 0);
+          whole = WriteCell(ids + offsets[c], n, strips, points, out + 3 * t) && whole;
+          const std::size_t made = static_cast<std::size_t>(std::max<vtkIdType>(n - 2, 0));
+          if (outColors)
+          {
+            std::fill_n(outColors + t, made, PackColor(cellColors + 4 * (firstCell + c)));
+          }
+          t += made;
         }
       }
       if (!whole)
@@ -169,7 +184,7 @@ struct TriangleWriter
     });
     if (damaged)
     {
-      RemoveDamaged(triangles, base);
+      RemoveDamaged(arrays, base);
     }
   }
 };
@@ -215,7 +230,8 @@ bool ReadTriangles(vtkActor* actor, vtkPolyData* input, TriangleArrays& arrays, 
   // Emptied, not freed: the memory of the last read is reused (fresh pages cost more than
   // the copy).
   arrays.Vertices.clear();
-  arrays.Triangles.clear();
+  arrays.Indices.clear();
+  arrays.CellColors.clear();
   arrays.Shift = { { 0.0, 0.0, 0.0 } };
   arrays.Colors = TriangleColors::Actor;
   vtkPoints* points = input->GetPoints();
@@ -253,9 +269,9 @@ bool ReadTriangles(vtkActor* actor, vtkPolyData* input, TriangleArrays& arrays, 
     arrays.Colors == TriangleColors::Cell ? colors->GetPointer(0) : nullptr;
   // Cell ids run over vertices, lines, polygons, strips in that order (VTK's cell data).
   const vtkIdType polys = input->GetNumberOfVerts() + input->GetNumberOfLines();
-  input->GetPolys()->Visit(TriangleWriter{}, false, polys, count, cellColors, arrays.Triangles);
-  input->GetStrips()->Visit(TriangleWriter{}, true, polys + input->GetNumberOfPolys(), count,
-    cellColors, arrays.Triangles);
+  input->GetPolys()->Visit(TriangleWriter{}, false, polys, count, cellColors, arrays);
+  input->GetStrips()->Visit(
+    TriangleWriter{}, true, polys + input->GetNumberOfPolys(), count, cellColors, arrays);
   return true;
 }
 
@@ -287,23 +303,30 @@ const SceneBuffers::Entry* SceneBuffers::Update(vtkActor* actor, std::string& wh
   entry.MapperTime = mapper->GetMTime(); // after MapScalars, which may build a lookup table
   entry.Shift = arrays.Shift;
   entry.Colors = arrays.Colors;
-  entry.TriangleCount = static_cast<unsigned int>(arrays.Triangles.size() / 4);
+  entry.TriangleCount = static_cast<unsigned int>(arrays.Indices.size() / 3);
+  entry.CellColors.Release();
   if (entry.TriangleCount == 0)
   {
     entry.Vertices.Release();
-    entry.Triangles.Release();
+    entry.Indices.Release();
     return &entry;
   }
   const std::size_t vertexBytes = arrays.Vertices.size() * sizeof(TriangleArrays::Vertex);
-  const std::size_t triangleBytes = arrays.Triangles.size() * sizeof(std::uint32_t);
-  if (!entry.Vertices.Allocate(vertexBytes) || !entry.Triangles.Allocate(triangleBytes))
+  const std::size_t indexBytes = arrays.Indices.size() * sizeof(std::uint32_t);
+  const std::size_t colorBytes = arrays.CellColors.size() * sizeof(std::uint32_t);
+  if (!entry.Vertices.Allocate(vertexBytes) || !entry.Indices.Allocate(indexBytes) ||
+    (colorBytes > 0 && !entry.CellColors.Allocate(colorBytes)))
   {
     why = "no GPU memory for its triangles";
     this->Erase(this->Entries.find(actor));
     return nullptr;
   }
   entry.Vertices.Upload(arrays.Vertices.data(), vertexBytes);
-  entry.Triangles.Upload(arrays.Triangles.data(), triangleBytes);
+  entry.Indices.Upload(arrays.Indices.data(), indexBytes);
+  if (colorBytes > 0)
+  {
+    entry.CellColors.Upload(arrays.CellColors.data(), colorBytes);
+  }
   return &entry;
 }
 
@@ -325,7 +348,8 @@ std::size_t SceneBuffers::MemoryBytes() const
   std::size_t bytes = 0;
   for (const auto& entry : this->Entries)
   {
-    bytes += entry.second.Vertices.Bytes() + entry.second.Triangles.Bytes();
+    bytes += entry.second.Vertices.Bytes() + entry.second.Indices.Bytes() +
+      entry.second.CellColors.Bytes();
   }
   return bytes;
 }
@@ -333,7 +357,8 @@ std::size_t SceneBuffers::MemoryBytes() const
 SceneBuffers::Map::iterator SceneBuffers::Erase(Map::iterator it)
 {
   it->second.Vertices.Release();
-  it->second.Triangles.Release();
+  it->second.Indices.Release();
+  it->second.CellColors.Release();
   return this->Entries.erase(it);
 }
 

@@ -1,10 +1,10 @@
 /**
- * SceneBuffers: the GPU-resident copy of the actors that compute voxelization reads
- * (voxelize.comp). Per actor, the vertex positions of its surface triangles (relative to a
- * shift, so that data far from the origin stays exact in floats), their scalar colours and the
- * triangles' vertex indices and cell colours, uploaded when the actor's data or colouring
- * changes (its input's or its mapper's time, which covers the lookup table); transforms and
- * materials are read at each draw. An actor VTK draws some other way keeps the raster path
+ * SceneBuffers: the GPU-resident copy of the actors that compute voxelization (voxelize.comp)
+ * and the shadow maps (shadow_depth.vert) read. Per actor, the vertex positions of its surface
+ * triangles (relative to a shift, so that data far from the origin stays exact in floats),
+ * their scalar colours, the triangles' vertex indices and their cell colours, uploaded when
+ * the actor's data or colouring changes (its input's or its mapper's time, which covers the
+ * lookup table); transforms and materials are read at each draw. An actor VTK draws some other way keeps the raster path
  * through its mapper (ComputeUnreadable says why).
  */
 #ifndef VoxelGISceneBuffers_h
@@ -45,7 +45,8 @@ struct TriangleArrays
     std::uint32_t Color; // RGBA8, red in the low byte
   };
   std::vector<Vertex> Vertices;
-  std::vector<std::uint32_t> Triangles; // per triangle: three vertex indices, RGBA8 cell colour
+  std::vector<std::uint32_t> Indices;    // three vertex indices per triangle
+  std::vector<std::uint32_t> CellColors; // RGBA8 per triangle: per-cell colouring only
   std::array<double, 3> Shift{ { 0.0, 0.0, 0.0 } };
   TriangleColors Colors = TriangleColors::Actor;
 };
@@ -72,7 +73,8 @@ public:
     vtkMTimeType InputTime = 0;
     vtkMTimeType MapperTime = 0;
     StorageBuffer Vertices;
-    StorageBuffer Triangles;
+    StorageBuffer Indices;    // also the element buffer of the shadow maps' draws
+    StorageBuffer CellColors; // per-cell colouring only
     unsigned int TriangleCount = 0;
     std::array<double, 3> Shift{ { 0.0, 0.0, 0.0 } };
     TriangleColors Colors = TriangleColors::Actor;

@@ -12,8 +12,6 @@
 
 #include <string>
 
-class vtkActor;
-class vtkMatrix4x4;
 class vtkOpenGLRenderWindow;
 
 namespace voxelgi
@@ -26,9 +24,9 @@ public:
   bool Prepare(std::string& error);
   /// Bind the program for the draws of one layer; End unbinds it.
   void Begin(vtkOpenGLRenderWindow* window);
-  /// Draw `buffers`' triangles with `actor`'s matrix into the bound layer, whose clip
-  /// coordinates `clipFromWorld` gives.
-  void Draw(vtkActor* actor, const SceneBuffers::Entry& buffers, vtkMatrix4x4* clipFromWorld);
+  /// Draw `buffers`' triangles into the bound layer; `clipFromModel` (column-major) takes
+  /// their shifted model coordinates to the layer's clip space.
+  void Draw(const SceneBuffers::Entry& buffers, const float* clipFromModel);
   void End();
   void ReleaseGraphicsResources();
 

@@ -135,6 +135,36 @@ bool OutsideView(const double* bounds, vtkMatrix4x4* clipFromWorld)
   }
   return std::any_of(outside, outside + 5, [](int n) { return n == 8; });
 }
+
+// Clip coordinates from an actor's shifted model coordinates (SceneBuffers): clip <- world
+// <- model <- shifted, row-major doubles in, column-major floats out, composed in double so
+// that data far from the origin stays exact.
+std::array<float, 16> ClipFromModel(const std::array<double, 16>& clipFromWorld,
+  const std::array<double, 16>& worldFromModel, const std::array<double, 3>& shift)
+{
+  std::array<double, 16> model = worldFromModel;
+  for (int r = 0; r < 4; ++r)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      model[4 * r + 3] += worldFromModel[4 * r + c] * shift[c];
+    }
+  }
+  std::array<float, 16> out;
+  for (int r = 0; r < 4; ++r)
+  {
+    for (int c = 0; c < 4; ++c)
+    {
+      double sum = 0.0;
+      for (int k = 0; k < 4; ++k)
+      {
+        sum += clipFromWorld[4 * r + k] * model[4 * k + c];
+      }
+      out[4 * c + r] = static_cast<float>(sum);
+    }
+  }
+  return out;
+}
 }
 
 std::size_t ShadowMaps::RequiredBytes(int size, const std::vector<vtkLight*>& lights)
@@ -254,6 +284,23 @@ void ShadowMaps::Run(const Frame& frame)
     return;
   }
   std::optional<ScopedStage> stage; // timed from the first layer drawn
+  this->Casters.clear();
+  for (const ActorRecord& record : *frame.Actors)
+  {
+    if (record.Actor)
+    {
+      Caster caster{ record.Actor, record.Revision, {}, {},
+        this->Voxels.Resident(frame, record.Actor) };
+      std::copy_n(&record.Actor->GetMatrix()->Element[0][0], 16, caster.Matrix.begin());
+      const double* bounds = record.Actor->GetBounds();
+      caster.Bounds = { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 }; // uninitialized: never culled
+      if (bounds)
+      {
+        std::copy_n(bounds, 6, caster.Bounds.begin());
+      }
+      this->Casters.push_back(caster);
+    }
+  }
   // The casters draw through a renderer of ours whose camera is the light's: the user's
   // renderer and camera are left alone (see ViewRenderer).
   vtkRenderer* renderer = this->View.Attach(frame.Window);
@@ -318,14 +365,10 @@ void ShadowMaps::DrawLayer(const Frame& frame, int layer, vtkMatrix4x4* clipFrom
   // sees only part of the scene.
   LayerKey key;
   std::copy_n(&clipFromWorld->Element[0][0], 16, key.ClipFromWorld.begin());
-  for (const ActorRecord& record : *frame.Actors)
+  for (const Caster& caster : this->Casters)
   {
-    if (record.Actor && !OutsideView(record.Actor->GetBounds(), clipFromWorld))
+    if (!OutsideView(caster.Bounds.data(), clipFromWorld))
     {
-      // The matrix too: a follower's turns with the camera without a change to its data.
-      LayerKey::Caster caster{ record.Actor, record.Revision, {} };
-      const vtkMatrix4x4* matrix = record.Actor->GetMatrix();
-      std::copy_n(&matrix->Element[0][0], 16, caster.Matrix.begin());
       key.Casters.push_back(caster);
     }
   }
@@ -346,26 +389,27 @@ void ShadowMaps::DrawLayer(const Frame& frame, int layer, vtkMatrix4x4* clipFrom
   ostate->vtkglBindFramebuffer(GL_FRAMEBUFFER, this->Maps.PrepareLayer(layer));
   ostate->vtkglClearDepth(1.0);
   ostate->vtkglClear(GL_DEPTH_BUFFER_BIT);
-  std::vector<std::pair<vtkActor*, const SceneBuffers::Entry*>> resident;
-  for (const LayerKey::Caster& caster : key.Casters)
+  bool resident = false;
+  for (const Caster& caster : key.Casters)
   {
-    const SceneBuffers::Entry* buffers = this->Voxels.Resident(frame, caster.Actor);
-    if (buffers)
-    {
-      resident.emplace_back(caster.Actor, buffers);
-    }
-    else
+    if (!caster.Buffers)
     {
       this->Copies.Draw(caster.Actor, renderer);
     }
+    resident = resident || caster.Buffers;
   }
-  if (!resident.empty())
+  if (resident)
   {
     ostate->vtkglDisable(GL_CULL_FACE);
     this->Depth.Begin(frame.Window);
-    for (const auto& caster : resident)
+    for (const Caster& caster : key.Casters)
     {
-      this->Depth.Draw(caster.first, *caster.second, clipFromWorld);
+      if (caster.Buffers)
+      {
+        const std::array<float, 16> m =
+          ClipFromModel(key.ClipFromWorld, caster.Matrix, caster.Buffers->Shift);
+        this->Depth.Draw(*caster.Buffers, m.data());
+      }
     }
     this->Depth.End();
   }

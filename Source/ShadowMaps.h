@@ -95,21 +95,26 @@ private:
   int Wanted[2] = { 0, 0 }; // the size and count last asked for
   int Granted = 0;          // the size allocated for them
 
-  /// What a layer was drawn from: its view and its casters, with their revisions (a change
-  /// of their data the scan saw: ActorRecord::Revision) and matrices.
+  /// A voxelized actor as the layers see it, read once per Run: the key part (identity,
+  /// the scan's revision of its data: ActorRecord::Revision, and its matrix, row-major,
+  /// since a follower's turns with the camera without a change to its data) and what
+  /// drawing takes.
+  struct Caster
+  {
+    vtkActor* Actor;
+    std::uint64_t Revision;
+    std::array<double, 16> Matrix;
+    std::array<double, 6> Bounds;
+    const SceneBuffers::Entry* Buffers; // null: drawn through a copy of its mapper
+    bool operator==(const Caster& other) const
+    {
+      return this->Actor == other.Actor && this->Revision == other.Revision &&
+        this->Matrix == other.Matrix;
+    }
+  };
+  /// What a layer was drawn from: its view (clip from world, row-major) and its casters.
   struct LayerKey
   {
-    struct Caster
-    {
-      vtkActor* Actor;
-      std::uint64_t Revision;
-      std::array<double, 16> Matrix;
-      bool operator==(const Caster& other) const
-      {
-        return this->Actor == other.Actor && this->Revision == other.Revision &&
-          this->Matrix == other.Matrix;
-      }
-    };
     std::array<double, 16> ClipFromWorld{};
     std::vector<Caster> Casters;
     bool operator==(const LayerKey& other) const
@@ -127,6 +132,7 @@ private:
   MapperCopies Copies; // depth-only draws never switch the user's mappers
   ShadowDepth Depth;   // the actors with GPU-resident triangles
   std::vector<LayerKey> Drawn; // per layer of the allocated maps
+  std::vector<Caster> Casters; // this Run's
   Block Data{};
   StorageBuffer Buffer;
 };

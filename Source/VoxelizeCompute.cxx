@@ -105,7 +105,10 @@ void VoxelizeCompute::Draw(const Frame& frame, const std::vector<Item>& items, b
         static_cast<float>(item.Emission[1]), static_cast<float>(item.Emission[2]) };
       const std::array<float, 16> matrix = GridFromModel(frame.Grid, item.Actor, buffers.Shift);
       buffers.Vertices.Bind(VOXELGI_SCENE_VERTEX_BINDING);
-      buffers.Triangles.Bind(VOXELGI_SCENE_TRIANGLE_BINDING);
+      buffers.Indices.Bind(VOXELGI_SCENE_INDEX_BINDING);
+      // Read only with per-cell colouring; something is bound in every case.
+      (buffers.CellColors.IsAllocated() ? buffers.CellColors : buffers.Indices)
+        .Bind(VOXELGI_SCENE_CELL_COLOR_BINDING);
       this->Program.Use(frame.Window);
       this->Program.SetMat4Array("voxelGridFromModel", 1, matrix.data());
       this->Program.SetUInt("voxelTriangleCount", buffers.TriangleCount);

@@ -89,11 +89,12 @@ TEST(SceneBuffers, TrianglesAsVTKDrawsThem)
   ASSERT_TRUE(voxelgi::ReadTriangles(m.Actor, m.Data, arrays, why));
   EXPECT_EQ(arrays.Colors, voxelgi::TriangleColors::Actor);
   const std::vector<std::uint32_t> expected = {
-    0, 1, 2, 0, 0, 2, 3, 0, // the quad as a fan
-    4, 5, 6, 0,             // the triangle; the damaged one left out
-    7, 8, 9, 0, 8, 10, 9, 0, 9, 10, 11, 0 // the strip, every other one turned
+    0, 1, 2, 0, 2, 3, // the quad as a fan
+    4, 5, 6,          // the triangle; the damaged one left out
+    7, 8, 9, 8, 10, 9, 9, 10, 11 // the strip, every other one turned
   };
-  EXPECT_EQ(arrays.Triangles, expected);
+  EXPECT_EQ(arrays.Indices, expected);
+  EXPECT_TRUE(arrays.CellColors.empty()); // coloured by the actor
   // Positions relative to the bounds' centre (0.5, 2.5, 10).
   ASSERT_EQ(arrays.Vertices.size(), 12u);
   EXPECT_DOUBLE_EQ(arrays.Shift[2], 10.0);
@@ -112,12 +113,13 @@ TEST(SceneBuffers, CellColorsByVTKCellNumbering)
   std::string why;
   ASSERT_TRUE(voxelgi::ReadTriangles(m.Actor, m.Data, arrays, why));
   EXPECT_EQ(arrays.Colors, voxelgi::TriangleColors::Cell);
-  ASSERT_EQ(arrays.Triangles.size(), 24u);
-  EXPECT_EQ(arrays.Triangles[3], Gray(25));  // the quad: cell 2
-  EXPECT_EQ(arrays.Triangles[7], Gray(25));
-  EXPECT_EQ(arrays.Triangles[11], Gray(35)); // the triangle: cell 3
-  EXPECT_EQ(arrays.Triangles[15], Gray(55)); // the strip: cell 5
-  EXPECT_EQ(arrays.Triangles[23], Gray(55));
+  ASSERT_EQ(arrays.Indices.size(), 18u);
+  ASSERT_EQ(arrays.CellColors.size(), 6u); // one per triangle, the damaged one left out
+  EXPECT_EQ(arrays.CellColors[0], Gray(25)); // the quad: cell 2
+  EXPECT_EQ(arrays.CellColors[1], Gray(25));
+  EXPECT_EQ(arrays.CellColors[2], Gray(35)); // the triangle: cell 3
+  EXPECT_EQ(arrays.CellColors[3], Gray(55)); // the strip: cell 5
+  EXPECT_EQ(arrays.CellColors[5], Gray(55));
 }
 
 TEST(SceneBuffers, PointColors)
