@@ -28,6 +28,8 @@ enum class LightWork
   Current,  ///< it is up to date: nothing runs
   Relight,  ///< voxels, lights or settings changed: light and bounce anew
   Continue, ///< only camera lights turned: relight, one bounce on from the last indirect light
+  Progress, ///< lights or voxels changed in an interactive render: relight, one bounce on from
+            ///< the last indirect light; the next still frame converges (InteractiveBounces)
 };
 
 /// What the per-pixel stages do this frame.
@@ -51,7 +53,7 @@ struct FramePlan
   TraceWork Trace = TraceWork::Full;
   /// A voxel debug view replaces the trace: VTK's image with the voxels over it.
   bool VoxelView = false;
-  /// Bounces the relight runs (Continue: one).
+  /// Bounces the relight runs (Continue, Progress: one).
   int Bounces = 0;
 };
 
@@ -79,13 +81,13 @@ public:
 
   /// What the radiance gets: whether the voxels change this frame (`voxelsChange`) or
   /// changed since it was lit, the lights (`lightsChanged` since it was lit, the camera
-  /// lights' `turn` since then, infinite when other lights changed), `settings` and the
-  /// grid's `resolution`.
+  /// lights' `turn` since then, infinite when other lights changed), `settings`, the `grid`
+  /// and whether VTK renders interactively (`interactive`: InteractiveBounces applies).
   LightWork PlanLights(bool voxelsChange, bool lightsChanged, double turn,
-    const Settings& settings, int resolution) const;
-  /// The radiance was lit (Relight, Continue) for `settings` and `resolution`; `valid`:
+    const Settings& settings, const VoxelGrid& grid, bool interactive) const;
+  /// The radiance was lit (Relight, Continue, Progress) for `settings` and `grid`; `valid`:
   /// false when it could not be (it is stale then).
-  void Lit(LightWork work, bool valid, const Settings& settings, int resolution);
+  void Lit(LightWork work, bool valid, const Settings& settings, const VoxelGrid& grid);
   /// The radiance this history's voxels have, for passes sharing them.
   const RadianceState& GetRadiance() const { return this->Radiance; }
 
@@ -111,6 +113,7 @@ private:
   unsigned long long VoxelGeneration = 0;
   // What the radiance was lit from: the voxels' generation and the settings it depends on.
   bool LitValid = false;
+  bool LitPartly = false; // by a Progress: a still frame converges it
   unsigned long long LitVoxels = 0;
   std::vector<double> LitKey;
   RadianceState Radiance;

@@ -92,16 +92,21 @@ bool FramePlanner::PlanLights(Frame& frame, bool emission, vtkMTimeType settings
   bool changed = false;
   if (!this->GatherLights(frame, emission, changed))
   {
-    this->History.Lit(LightWork::Relight, false, frame.Config, frame.Grid.Resolution);
+    this->History.Lit(LightWork::Relight, false, frame.Config, frame.Grid);
     return false;
   }
   const double turn = changed ? this->Lights.CameraTurnSinceLit() : 0.0;
+  // VTK's interactor styles raise the window's desired update rate while the mouse drags
+  // (15 frames/s by default) and drop it for the still frame after (0.0001).
+  const bool interactive =
+    frame.Config.InteractiveBounces && frame.Window->GetDesiredUpdateRate() >= 1.0;
   plan.Lights = this->History.PlanLights(
-    plan.Voxels.Run && !plan.RanAhead, changed, turn, frame.Config, frame.Grid.Resolution);
-  // After a camera light's turn the new direct light plus the last bounces' indirect light
-  // is close to the converged radiance: one bounce from it stands for the whole chain.
-  plan.Bounces = plan.Lights == LightWork::Continue ? std::min(1, frame.Config.Bounces)
-                                                    : frame.Config.Bounces;
+    plan.Voxels.Run && !plan.RanAhead, changed, turn, frame.Config, frame.Grid, interactive);
+  // After a camera light's turn, or a change while VTK renders interactively, the new direct
+  // light plus the last bounces' indirect light is close to the converged radiance: one
+  // bounce from it stands for the whole chain.
+  const bool onward = plan.Lights == LightWork::Continue || plan.Lights == LightWork::Progress;
+  plan.Bounces = onward ? std::min(1, frame.Config.Bounces) : frame.Config.Bounces;
   frame.Radiance = &this->History.GetRadiance();
   this->PlanTrace(frame, false, settingsTime);
   return true;
@@ -159,7 +164,7 @@ void FramePlanner::PlanTrace(Frame& frame, bool lightsReset, vtkMTimeType settin
 {
   FramePlan& plan = frame.Plan;
   // A relight changes the radiance: the whole image is traced again.
-  plan.Trace = plan.Lights == LightWork::Relight
+  plan.Trace = plan.Lights == LightWork::Relight || plan.Lights == LightWork::Progress
     ? TraceWork::Full
     : this->History.PlanTrace(*frame.Radiance, lightsReset, settingsTime,
         this->Scan.ImageKey(frame.Renderer, settingsTime, true));
@@ -202,7 +207,7 @@ void FramePlanner::Lit(const Frame& frame, bool valid, const std::string& note)
   {
     this->Notices.Report(note, false);
   }
-  this->History.Lit(frame.Plan.Lights, valid, frame.Config, frame.Grid.Resolution);
+  this->History.Lit(frame.Plan.Lights, valid, frame.Config, frame.Grid);
 }
 
 void FramePlanner::Presented(const Frame& frame, bool traced, vtkMTimeType settingsTime)

@@ -79,7 +79,9 @@ void LightVoxels::Run(const Frame& frame)
     return;
   }
   const bool direct = this->Direct.IsAllocated();
-  const bool keep = frame.Plan.Lights == LightWork::Continue && direct;
+  const bool keep =
+    (frame.Plan.Lights == LightWork::Continue || frame.Plan.Lights == LightWork::Progress) &&
+    direct;
   p.SetInt("writeDirect", direct ? 1 : 0);
   p.SetInt("keepIndirect", keep ? 1 : 0);
   const GLenum access = keep ? GL_READ_WRITE : GL_WRITE_ONLY;

@@ -16,8 +16,9 @@
 // (one light moves), one-moving (one dynamic actor moves), all-moving (every actor moves),
 // new-data (every actor's data replaced, as by a time step: its points modified), plain (GI off,
 // VTK alone, static), plain-new-data (GI off, new data each frame) and transfer-function (the
-// volumes' opacity changes: resampled every frame); --sequences runs some of
-// them. Per frame: the wall time of Render() with glFinish, its CPU time (Render() returning,
+// volumes' opacity changes: resampled every frame), and light-interactive, one-moving-interactive
+// and all-moving-interactive (those changes while the window renders interactively, at an
+// interactor style's desired update rate); --sequences runs some of them. Per frame: the wall time of Render() with glFinish, its CPU time (Render() returning,
 // without glFinish), the GPU time span of the frame (two timestamp queries) and per-stage GPU times
 // (timer queries) go to the CSV; the JSON and the printed table hold medians per sequence, and the
 // mean frame (a sequence whose frames differ in kind, as the headlight orbit's relights, is judged
@@ -593,7 +594,7 @@ int main(int argc, char* argv[])
       }
     }
   };
-  const std::vector<Sequence> sequences = {
+  std::vector<Sequence> sequences = {
     { "static", [](int) {}, true },
     { "orbit", [&](int) { orbit(); }, true },
     { "headlight-orbit", [&](int) { orbit(); }, true,
@@ -625,6 +626,16 @@ int main(int argc, char* argv[])
       },
       true },
   };
+
+  // The same changes while VTK renders interactively: an interactor style's update rate while
+  // a mouse button is down (InteractiveBounces).
+  for (const std::string name : { "light", "one-moving", "all-moving" })
+  {
+    const auto still = std::find_if(sequences.begin(), sequences.end(),
+      [&name](const Sequence& sequence) { return sequence.Name == name; });
+    sequences.push_back({ name + "-interactive", still->Step, true,
+      [&window](bool on) { window->SetDesiredUpdateRate(on ? 15.0 : 0.0001); } });
+  }
 
   std::vector<const Sequence*> selected;
   for (const Sequence& sequence : sequences)

@@ -9,7 +9,12 @@
 // A scene lit by camera-following lights (a headlight) also gets CameraLightTurn rows: the
 // image after an orbit of 92 degrees in 2-degree steps that ends at the scene's camera (the
 // voxel light lags as it would for a user), with the orbit's mean frame as camera_ms; the
-// lag itself (the error against the defaults' image) is printed.
+// lag itself (the error against the defaults' image) is printed. A scene with a scene light
+// gets an InteractiveBounces row: the image of the last of 20 frames rendered interactively
+// (the window's desired update rate of an interactor style's drag) while the first scene
+// light circles by a twentieth of the scene's extent and returns to its place, so that each
+// relight bounces once on from the last solution, with the drag's mean frame as camera_ms;
+// its error against the defaults' image is printed too.
 //
 //   VoxelGIErrorStudy [--egl] SCENE REFERENCE.pfm OUT.csv [frames]
 //
@@ -29,6 +34,7 @@
 #include "vtkFloatArray.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkRenderWindow.h"
@@ -53,6 +59,50 @@ struct Config
   std::string Setting; // setting of the settings table, empty for the others
   double Value = 0.0;
 };
+
+/// Render 20 frames interactively (an interactor style's desired update rate) while the first
+/// scene light circles by a twentieth of the scene's extent, ending at its place; returns the
+/// mean frame in ms and leaves the last frame unconverged (no still frame after it).
+double DragFirstSceneLight(vtkRenderer* renderer, vtkRenderWindow* window)
+{
+  vtkLight* light = nullptr;
+  vtkCollectionSimpleIterator it;
+  renderer->GetLights()->InitTraversal(it);
+  while (vtkLight* candidate = renderer->GetLights()->GetNextLight(it))
+  {
+    light = !light && candidate->GetSwitch() && candidate->LightTypeIsSceneLight() ? candidate : light;
+  }
+  if (!light)
+  {
+    return 0.0;
+  }
+  double bounds[6];
+  renderer->ComputeVisiblePropBounds(bounds);
+  const double radius =
+    0.05 * std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] });
+  double home[3];
+  light->GetPosition(home);
+  constexpr int Steps = 20;
+  const double rate = window->GetDesiredUpdateRate();
+  window->SetDesiredUpdateRate(15.0);
+  double meanMs = 0.0;
+  for (int step = 1; step <= Steps; ++step)
+  {
+    const double angle = 2.0 * vtkMath::Pi() * step / Steps;
+    const double dx = step == Steps ? 0.0 : radius * std::sin(angle);
+    const double dz = step == Steps ? 0.0 : radius * (1.0 - std::cos(angle));
+    light->SetPosition(home[0] + dx, home[1], home[2] + dz);
+    window->WaitForCompletion();
+    const auto start = std::chrono::steady_clock::now();
+    window->Render();
+    window->WaitForCompletion();
+    meanMs +=
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() /
+      Steps;
+  }
+  window->SetDesiredUpdateRate(rate);
+  return meanMs;
+}
 
 double Median(std::vector<double> v)
 {
@@ -97,6 +147,7 @@ int main(int argc, char* argv[])
     return description->Read(renderer);
   };
   bool cameraLights = false;
+  bool sceneLights = false;
   {
     vtkNew<vtkRenderer> probe;
     if (!addScene(probe))
@@ -109,6 +160,7 @@ int main(int argc, char* argv[])
     while (vtkLight* light = probe->GetLights()->GetNextLight(it))
     {
       cameraLights = cameraLights || (light->GetSwitch() && !light->LightTypeIsSceneLight());
+      sceneLights = sceneLights || (light->GetSwitch() && light->LightTypeIsSceneLight());
     }
     cameraLights = cameraLights ||
       (probe->GetLights()->GetNumberOfItems() == 0 && probe->GetAutomaticLightCreation());
@@ -139,6 +191,10 @@ int main(int argc, char* argv[])
     {
       configs.push_back({ "CameraLightTurn", "CameraLightTurn", turn });
     }
+  }
+  if (sceneLights)
+  {
+    configs.push_back({ "InteractiveBounces", "InteractiveBounces", 1.0 });
   }
   for (const auto& s : sweep)
   {
@@ -246,6 +302,10 @@ int main(int argc, char* argv[])
           std::chrono::steady_clock::now() - start).count() / OrbitSteps;
       }
     }
+    else if (config.Setting == "InteractiveBounces")
+    {
+      cameraMs = DragFirstSceneLight(renderer, window);
+    }
     else
     {
       cameraMs = timeFrames(false);
@@ -267,11 +327,13 @@ int main(int argc, char* argv[])
     {
       defaultsImage = image;
     }
-    if (config.Setting == "CameraLightTurn" && defaultsImage.Width == image.Width)
+    if ((config.Setting == "CameraLightTurn" || config.Setting == "InteractiveBounces") &&
+      defaultsImage.Width == image.Width)
     {
       const voxelgi::metrics::Errors lag = voxelgi::metrics::Compare(image, defaultsImage);
-      std::cout << "CameraLightTurn " << config.Value << " after the orbit, against the defaults: RMSE "
-                << lag.Rmse << ", FLIP " << lag.Flip << std::endl;
+      std::cout << config.Setting << " " << config.Value
+                << " after the orbit or drag, against the defaults: RMSE " << lag.Rmse
+                << ", FLIP " << lag.Flip << std::endl;
     }
     if (config.Name == "plain" || config.Name == "ssao" || config.Name == "defaults")
     {

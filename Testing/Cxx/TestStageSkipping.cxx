@@ -249,6 +249,16 @@ int TestStageSkipping(int, char*[])
     { "the 17th light changed",
       [&] { vtkLight::SafeDownCast(renderer->GetLights()->GetItemAsObject(16))->SetIntensity(0.5); },
       "Scan," + Trace },
+    // While VTK renders interactively (an interactor style's update rate while a mouse button
+    // is down: InteractiveBounces), a moved light relights with one bounce on from the last
+    // solution; the first still frame bounces them all and equals a full recompute.
+    { "a light dragged interactively",
+      [&] {
+        window->SetDesiredUpdateRate(15.0);
+        light->SetPosition(1.0, 4.0, 1.0);
+      },
+      "Scan," + Relight, 0.05 },
+    { "the still frame after it", [&] { window->SetDesiredUpdateRate(0.0001); }, "Scan," + Light },
     // Last: from here on scattered pixels differ from a fresh pass by one half-float step of
     // the indirect light (2.4e-4), also after a forced full rebuild; stale voxels differ by
     // far more. The changed panel also turns dynamic and leaves the voxels it shares with the

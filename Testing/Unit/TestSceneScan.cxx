@@ -356,26 +356,68 @@ TEST_F(ScanFixture, ImageKeyPlansTheTrace)
   EXPECT_EQ(plan(2), voxelgi::TraceWork::Full);
 }
 
+namespace
+{
+voxelgi::VoxelGrid Grid(int resolution, double x = 0.0)
+{
+  voxelgi::VoxelGrid grid;
+  grid.Origin = glm::dvec3(x, 0.0, 0.0);
+  grid.VoxelSize = 1.0;
+  grid.Resolution = resolution;
+  return grid;
+}
+}
+
 TEST(FrameHistory, PlansTheLights)
 {
   voxelgi::Settings settings;
   settings.CameraLightTurn = 45.0;
   voxelgi::FrameHistory history;
   const double inf = std::numeric_limits<double>::infinity();
-  EXPECT_EQ(history.PlanLights(false, false, 0.0, settings, 64), voxelgi::LightWork::Relight);
-  history.Lit(voxelgi::LightWork::Relight, true, settings, 64);
+  const voxelgi::VoxelGrid g = Grid(64);
+  EXPECT_EQ(history.PlanLights(false, false, 0.0, settings, g, false), voxelgi::LightWork::Relight);
+  history.Lit(voxelgi::LightWork::Relight, true, settings, g);
   const unsigned long long lit = history.GetRadiance().Generation;
-  EXPECT_EQ(history.PlanLights(false, false, 0.0, settings, 64), voxelgi::LightWork::Current);
-  EXPECT_EQ(history.PlanLights(false, true, 30.0, settings, 64), voxelgi::LightWork::Current);
-  EXPECT_EQ(history.PlanLights(false, true, 60.0, settings, 64), voxelgi::LightWork::Continue);
-  EXPECT_EQ(history.PlanLights(false, true, inf, settings, 64), voxelgi::LightWork::Relight);
-  EXPECT_EQ(history.PlanLights(false, false, 0.0, settings, 128), voxelgi::LightWork::Relight);
-  history.Lit(voxelgi::LightWork::Continue, true, settings, 64);
+  EXPECT_EQ(history.PlanLights(false, false, 0.0, settings, g, false), voxelgi::LightWork::Current);
+  EXPECT_EQ(history.PlanLights(false, true, 30.0, settings, g, false), voxelgi::LightWork::Current);
+  EXPECT_EQ(history.PlanLights(false, true, 60.0, settings, g, false), voxelgi::LightWork::Continue);
+  EXPECT_EQ(history.PlanLights(false, true, inf, settings, g, false), voxelgi::LightWork::Relight);
+  EXPECT_EQ(history.PlanLights(false, false, 0.0, settings, Grid(128), false), voxelgi::LightWork::Relight);
+  history.Lit(voxelgi::LightWork::Continue, true, settings, g);
   EXPECT_EQ(history.GetRadiance().Generation, lit); // a camera-light turn keeps the trace's
-  EXPECT_EQ(history.PlanLights(true, false, 0.0, settings, 64), voxelgi::LightWork::Relight);
+  EXPECT_EQ(history.PlanLights(true, false, 0.0, settings, g, false), voxelgi::LightWork::Relight);
   history.VoxelsWritten();
-  EXPECT_EQ(history.PlanLights(false, true, 60.0, settings, 64), voxelgi::LightWork::Relight);
-  history.Lit(voxelgi::LightWork::Relight, false, settings, 64);
+  EXPECT_EQ(history.PlanLights(false, true, 60.0, settings, g, false), voxelgi::LightWork::Relight);
+  history.Lit(voxelgi::LightWork::Relight, false, settings, g);
   EXPECT_EQ(history.GetRadiance().Generation, lit + 1);
-  EXPECT_EQ(history.PlanLights(false, false, 0.0, settings, 64), voxelgi::LightWork::Relight);
+  EXPECT_EQ(history.PlanLights(false, false, 0.0, settings, g, false), voxelgi::LightWork::Relight);
+}
+
+TEST(FrameHistory, InteractiveRelightsConvergeWhenStill)
+{
+  voxelgi::Settings settings;
+  settings.Bounces = 4;
+  voxelgi::FrameHistory history;
+  const double inf = std::numeric_limits<double>::infinity();
+  const voxelgi::VoxelGrid g = Grid(64);
+  // Nothing to continue from yet.
+  EXPECT_EQ(history.PlanLights(false, true, inf, settings, g, true), voxelgi::LightWork::Relight);
+  history.Lit(voxelgi::LightWork::Relight, true, settings, g);
+  const unsigned long long lit = history.GetRadiance().Generation;
+  // A light or an actor changes while VTK renders interactively: one bounce on.
+  EXPECT_EQ(history.PlanLights(false, true, inf, settings, g, true), voxelgi::LightWork::Progress);
+  EXPECT_EQ(history.PlanLights(true, false, 0.0, settings, g, true), voxelgi::LightWork::Progress);
+  EXPECT_EQ(history.PlanLights(true, false, 0.0, settings, Grid(64, 0.5), true),
+    voxelgi::LightWork::Relight); // the grid moved: the last solution is elsewhere
+  history.Lit(voxelgi::LightWork::Progress, true, settings, g);
+  EXPECT_EQ(history.GetRadiance().Generation, lit + 1); // the image is traced anew
+  // Interaction goes on without a change: nothing to do; the first still frame converges.
+  EXPECT_EQ(history.PlanLights(false, false, 0.0, settings, g, true), voxelgi::LightWork::Current);
+  EXPECT_EQ(history.PlanLights(false, false, 0.0, settings, g, false), voxelgi::LightWork::Relight);
+  history.Lit(voxelgi::LightWork::Relight, true, settings, g);
+  EXPECT_EQ(history.PlanLights(false, false, 0.0, settings, g, false), voxelgi::LightWork::Current);
+  // One bounce is all a relight runs anyway.
+  settings.Bounces = 1;
+  history.Lit(voxelgi::LightWork::Relight, true, settings, g);
+  EXPECT_EQ(history.PlanLights(false, true, inf, settings, g, true), voxelgi::LightWork::Relight);
 }

@@ -24,8 +24,11 @@ SEQUENCES = [  # (name in the JSON, what it measures, its plain VTK baseline)
     ("orbit", "camera move", "plain"),
     ("headlight-orbit", "camera move under the headlight", "plain"),
     ("light", "a light moves", "plain"),
+    ("light-interactive", "a light moves, interactively", "plain"),
     ("one-moving", "one actor moves", "plain"),
+    ("one-moving-interactive", "one actor moves, interactively", "plain"),
     ("all-moving", "every actor moves", "plain"),
+    ("all-moving-interactive", "every actor moves, interactively", "plain"),
     ("new-data", "new data every frame", "plain-new-data"),
     ("transfer-function", "a volume's transfer function changes", "plain"),
 ]
