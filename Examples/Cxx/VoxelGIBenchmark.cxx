@@ -628,13 +628,14 @@ int main(int argc, char* argv[])
   };
 
   // The same changes while VTK renders interactively: an interactor style's update rate while
-  // a mouse button is down (InteractiveBounces).
+  // a mouse button is down (InteractiveBounces); each runs right after its still sequence.
   for (const std::string name : { "light", "one-moving", "all-moving" })
   {
     const auto still = std::find_if(sequences.begin(), sequences.end(),
       [&name](const Sequence& sequence) { return sequence.Name == name; });
-    sequences.push_back({ name + "-interactive", still->Step, true,
-      [&window](bool on) { window->SetDesiredUpdateRate(on ? 15.0 : 0.0001); } });
+    const Sequence interactive{ name + "-interactive", still->Step, true,
+      [&window](bool on) { window->SetDesiredUpdateRate(on ? 15.0 : 0.0001); } };
+    sequences.insert(still + 1, interactive);
   }
 
   std::vector<const Sequence*> selected;
