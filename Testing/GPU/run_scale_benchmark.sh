@@ -5,8 +5,10 @@
 # through EGL. Each JSON lists the settings it ran with.
 #   sphere of N triangles, all moving and new data each frame, 128^3 and 256^3; at 128^3 also
 #     through VTK's mappers (ComputeVoxelization=0)
-#   atrium (81 actors), 256^3: all moving, light moving, camera only
-#   field of 1000 actors, 128^3: all moving, new data, camera only
+#   atrium (81 actors), 256^3: all moving, one moving, light moving (each also while the window
+#     renders interactively), camera only
+#   field of 1000 actors, 128^3: all moving (also interactively), light moving, new data,
+#     camera only
 #   voxelization against triangles (compute and raster), 1e4 ... SWEEP_MAX, 128^3
 # Usage: run_scale_benchmark.sh BIN_DIR LIB_DIR OUTPUT_DIR [MACHINE] [FRAMES] [SPHERE_TRIANGLES]
 #                               [SWEEP_MAX]
@@ -21,8 +23,15 @@ run() {
     --sequences "$sequences" --json "$out/$machine-scale-$name.json" \
     --csv "$out/$machine-scale-$name.csv" "$@" 2>&1 | grep -v -E "WARN|ERR|^\s*$|wrote"
 }
-run field1000-128 orbit,all-moving,new-data,plain,plain-new-data --scene field --objects 999 --resolution 128
-run atrium-256 orbit,light,all-moving,plain --scene atrium --resolution 256
+run field1000-128 orbit,light,all-moving,all-moving-interactive,new-data,plain,plain-new-data \
+  --scene field --objects 999 --resolution 128
+# The atrium's sequences in pairs, each pair in its own process with plain VTK's frame beside
+# it: the lent GPUs' raster throughput has been seen to halve for a while (plain VTK's frame
+# too), and a ratio is only meaningful between frames measured in the same state.
+for q in orbit light one-moving all-moving; do
+  pair=$([ "$q" = orbit ] && echo "orbit,plain" || echo "$q,$q-interactive,plain")
+  run "atrium-256-$q" "$pair" --scene atrium --resolution 256
+done
 for res in 128 256; do
   run "sphere$triangles-$res" all-moving,new-data,plain,plain-new-data --scene sphere \
     --triangles "$triangles" --resolution "$res"
