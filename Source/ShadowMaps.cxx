@@ -284,23 +284,7 @@ void ShadowMaps::Run(const Frame& frame)
     return;
   }
   std::optional<ScopedStage> stage; // timed from the first layer drawn
-  this->Casters.clear();
-  for (const ActorRecord& record : *frame.Actors)
-  {
-    if (record.Actor)
-    {
-      Caster caster{ record.Actor, record.Revision, {}, {},
-        this->Voxels.Resident(frame, record.Actor) };
-      std::copy_n(&record.Actor->GetMatrix()->Element[0][0], 16, caster.Matrix.begin());
-      const double* bounds = record.Actor->GetBounds();
-      caster.Bounds = { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 }; // uninitialized: never culled
-      if (bounds)
-      {
-        std::copy_n(bounds, 6, caster.Bounds.begin());
-      }
-      this->Casters.push_back(caster);
-    }
-  }
+  this->ReadCasters(frame);
   // The casters draw through a renderer of ours whose camera is the light's: the user's
   // renderer and camera are left alone (see ViewRenderer).
   vtkRenderer* renderer = this->View.Attach(frame.Window);
@@ -356,6 +340,27 @@ void ShadowMaps::Run(const Frame& frame)
   ostate->PopFramebufferBindings();
   this->Buffer.Upload(&this->Data, sizeof(Block));
   this->Copies.Retain(*frame.Actors, frame.Window);
+}
+
+void ShadowMaps::ReadCasters(const Frame& frame)
+{
+  this->Casters.clear();
+  for (const ActorRecord& record : *frame.Actors)
+  {
+    if (record.Actor)
+    {
+      Caster caster{ record.Actor, record.Revision, {}, {},
+        this->Voxels.Resident(frame, record.Actor) };
+      std::copy_n(&record.Actor->GetMatrix()->Element[0][0], 16, caster.Matrix.begin());
+      const double* bounds = record.Actor->GetBounds();
+      caster.Bounds = { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 }; // uninitialized: never culled
+      if (bounds)
+      {
+        std::copy_n(bounds, 6, caster.Bounds.begin());
+      }
+      this->Casters.push_back(caster);
+    }
+  }
 }
 
 void ShadowMaps::DrawLayer(const Frame& frame, int layer, vtkMatrix4x4* clipFromWorld,

@@ -122,6 +122,8 @@ private:
       return this->ClipFromWorld == other.ClipFromWorld && this->Casters == other.Casters;
     }
   };
+  /// The frame's voxelized actors as casters (this->Casters).
+  void ReadCasters(const Frame& frame);
   /// Draw `layer` from `clipFromWorld` unless it holds that view of the same casters; the
   /// first layer drawn starts the stage's clock.
   void DrawLayer(const Frame& frame, int layer, vtkMatrix4x4* clipFromWorld,
