@@ -27,6 +27,20 @@ namespace voxelgi
 {
 
 //------------------------------------------------------------------------------
+namespace
+{
+/// The info log of a shader or, with `program`, of a program object.
+std::string InfoLog(GLuint object, bool program)
+{
+  GLint length = 0;
+  (program ? glGetProgramiv : glGetShaderiv)(object, GL_INFO_LOG_LENGTH, &length);
+  std::vector<char> text(static_cast<std::size_t>(std::max(length, 1)), '\0');
+  (program ? glGetProgramInfoLog : glGetShaderInfoLog)(
+    object, static_cast<GLsizei>(text.size()), nullptr, text.data());
+  return text.data();
+}
+}
+
 GLProgram::~GLProgram()
 {
   // The owner releases GL objects with their context current (ReleaseGraphicsResources).
@@ -38,11 +52,6 @@ bool GLProgram::Build(
 {
   this->Release();
   const std::string header = "#version 430 core\n" + defines;
-  auto readLog = [&log](GLint length, auto getter) {
-    std::vector<char> text(static_cast<std::size_t>(length > 1 ? length : 1), '\0');
-    getter(static_cast<GLsizei>(text.size()), text.data());
-    log = text.data();
-  };
   const std::pair<GLenum, const char*> stages[2] = {
     { fragment ? GL_VERTEX_SHADER : GL_COMPUTE_SHADER, source }, { GL_FRAGMENT_SHADER, fragment }
   };
@@ -61,10 +70,7 @@ bool GLProgram::Build(
     glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
     if (!ok)
     {
-      GLint length = 0;
-      glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
-      readLog(length, [shader](GLsizei n, char* t) { glGetShaderInfoLog(shader, n, nullptr, t); });
-      log = NameShaderFiles(log);
+      log = NameShaderFiles(InfoLog(shader, false));
       glDeleteShader(shader);
       glDeleteProgram(program);
       return false;
@@ -77,9 +83,7 @@ bool GLProgram::Build(
   glGetProgramiv(program, GL_LINK_STATUS, &ok);
   if (!ok)
   {
-    GLint length = 0;
-    glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
-    readLog(length, [program](GLsizei n, char* t) { glGetProgramInfoLog(program, n, nullptr, t); });
+    log = InfoLog(program, true);
     glDeleteProgram(program);
     return false;
   }

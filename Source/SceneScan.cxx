@@ -322,17 +322,14 @@ void SceneScan::ReportLeftOut(
 
 //------------------------------------------------------------------------------
 void SceneScan::Compare(
-  std::vector<ActorRecord>& records, bool autoDynamic, bool& full, bool& dynamic) const
+  std::vector<ActorRecord>& records, const Settings& settings, bool& full, bool& dynamic)
 {
   full = !this->Voxelized || records.size() != this->Records.size();
   dynamic = false;
-  if (full)
-  {
-    return;
-  }
+  const bool unmatched = full;
   // Every record is compared, also after one has asked for a full rebuild: all the actors
   // that changed become dynamic in that one rebuild.
-  for (std::size_t i = 0; i < records.size(); ++i)
+  for (std::size_t i = 0; !unmatched && i < records.size(); ++i)
   {
     ActorRecord& record = records[i];
     const ActorRecord& old = this->Records[i];
@@ -354,8 +351,15 @@ void SceneScan::Compare(
     else if (changed)
     {
       full = true;
-      record.Dynamic = autoDynamic;
+      record.Dynamic = settings.AutoDynamic;
     }
+  }
+  // A new revision where the data changed or the scan cannot tell (0); Invalidate() and
+  // updates every frame stand for changes the scan cannot see.
+  const bool unseen = this->InvalidateRequested || settings.UpdatePolicy == UPDATE_EVERY_FRAME;
+  for (ActorRecord& record : records)
+  {
+    record.Revision = record.Revision && !unseen ? record.Revision : ++this->Revisions;
   }
 }
 
@@ -415,13 +419,7 @@ bool SceneScan::Scan(vtkRenderer* renderer, const Settings& settings, Ranks& ran
   Findings found;
   found.Collected = this->Collect(
     renderer, inRender, ranks.Distributed(), records, volumes, found.Bounds, messages.Warnings);
-  this->Compare(records, settings.AutoDynamic, found.Full, found.Dynamic);
-  // Invalidate() and updates every frame stand for changes the scan cannot see.
-  const bool unseen = this->InvalidateRequested || settings.UpdatePolicy == UPDATE_EVERY_FRAME;
-  for (ActorRecord& record : records)
-  {
-    record.Revision = record.Revision && !unseen ? record.Revision : ++this->Revisions;
-  }
+  this->Compare(records, settings, found.Full, found.Dynamic);
   // A volume that changed is resampled and merged again by the resolve: the actors' voxels
   // stay.
   found.Dynamic = found.Dynamic || volumes != this->Volumes;

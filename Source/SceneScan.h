@@ -124,8 +124,10 @@ private:
     vtkMTimeType& signature, std::string& why, std::set<vtkProp*>& proxied);
   /// Warn once about each new kind of prop left to VTK (`leftOut`: reason -> count).
   void ReportLeftOut(const std::map<std::string, int>& leftOut, std::vector<std::string>& warnings);
-  /// Compare with the accepted records: full rebuild, dynamic change, or nothing.
-  void Compare(std::vector<ActorRecord>& records, bool autoDynamic, bool& full, bool& dynamic) const;
+  /// Compare with the accepted records: full rebuild, dynamic change, or nothing; give each
+  /// record its revision.
+  void Compare(
+    std::vector<ActorRecord>& records, const Settings& settings, bool& full, bool& dynamic);
   /// Update policy: is a pending change rebuilt this frame?
   bool Due(const Settings& settings, bool settingsChanged, bool pending);
 

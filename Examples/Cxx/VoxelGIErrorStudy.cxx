@@ -68,13 +68,14 @@ double DragFirstSceneLight(vtkRenderer* renderer, vtkRenderWindow* window)
   vtkLight* light = nullptr;
   vtkCollectionSimpleIterator it;
   renderer->GetLights()->InitTraversal(it);
-  while (vtkLight* candidate = renderer->GetLights()->GetNextLight(it))
+  while (!light)
   {
-    light = !light && candidate->GetSwitch() && candidate->LightTypeIsSceneLight() ? candidate : light;
-  }
-  if (!light)
-  {
-    return 0.0;
+    vtkLight* candidate = renderer->GetLights()->GetNextLight(it);
+    if (!candidate)
+    {
+      return 0.0;
+    }
+    light = candidate->GetSwitch() && candidate->LightTypeIsSceneLight() ? candidate : nullptr;
   }
   double bounds[6];
   renderer->ComputeVisiblePropBounds(bounds);
