@@ -192,7 +192,7 @@ vec3 occludedDirect(vec3 p, vec3 origin, vec3 n, vec3 viewDir, vec3 albedo, floa
     {
       continue;
     }
-    float shadow;
+    vec3 shadow;
 #ifdef VOXELGI_SHADOW_MAPS
     if (pixelShadowMap(l))
     {
@@ -207,7 +207,9 @@ vec3 occludedDirect(vec3 p, vec3 origin, vec3 n, vec3 viewDir, vec3 albedo, floa
       // Stop short of the light by the cone's width there, so that geometry next to the
       // light (the ceiling a lamp hangs from) does not shadow everything it lights.
       float end = min(distance - max(2.0, 2.0 * shadowTanHalf * distance), maxDistance);
-      voxelConeTrace(origin, toLight, shadowTanHalf, start, end, 0.0, p, n, shadow);
+      float occlusion;
+      voxelConeTrace(origin, toLight, shadowTanHalf, start, end, 0.0, p, n, occlusion);
+      shadow = vec3(occlusion);
     }
     float sf = attenuation * pow(max(dot(reflect(-toLight, n), -viewDir), 0.0), power);
     occluded += shadow * (df * albedo + sf * specular) * voxelLights[l].color.rgb;

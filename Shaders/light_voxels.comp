@@ -92,9 +92,11 @@ void main()
       }
       bool back = dot(n, n) >= 0.25 && dot(n, toLight) < 0.0;
       vec3 side = dot(n, n) < 0.25 ? toLight : (back ? -n : n);
-      float visibility = voxelShadows != 0 ? voxelShadow(p, side, toLight, distance, true) : 1.0;
-      float backVisibility =
-        back && voxelShadows != 0 ? voxelShadow(p, side, toLight, distance, false) : visibility;
+      vec3 visibility =
+        vec3(voxelShadows != 0 ? voxelShadow(p, side, toLight, distance, true) : 1.0);
+      vec3 backVisibility = back && voxelShadows != 0
+        ? vec3(voxelShadow(p, side, toLight, distance, false))
+        : visibility;
 #ifdef VOXELGI_SHADOW_MAPS
       if (shadowMapped(l))
       {
@@ -103,9 +105,13 @@ void main()
         backVisibility = visibility;
       }
 #endif
-      float light = dot(voxelLights[l].color.rgb, vec3(1.0)) * attenuation * lambert;
-      radiance += albedo.rgb * voxelLights[l].color.rgb * (attenuation * lambert * visibility);
-      arriving += vec3(float(!back) * visibility, float(back) * backVisibility, float(back)) * light;
+      vec3 color = voxelLights[l].color.rgb;
+      float light = dot(color, vec3(1.0)) * attenuation * lambert;
+      radiance += albedo.rgb * color * visibility * (attenuation * lambert);
+      // (the light's power that arrives, for the side the bounce gathers over)
+      float front = dot(color, visibility) * attenuation * lambert;
+      float behind = dot(color, backVisibility) * attenuation * lambert;
+      arriving += vec3(float(!back) * front, float(back) * behind, float(back) * light);
     }
     // The direct volume's alpha says which side of the winding the bounce gathers over (-1:
     // the back): VTK lights both sides, and a room seen from inside may be wound outward.

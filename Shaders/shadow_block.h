@@ -18,7 +18,7 @@ VOXELGI_UNIFORM_BLOCK(VoxelShadowBlock, VOXELGI_SHADOW_BLOCK_BINDING)
   // x + y * distance from the light: a map texel's width in voxels there
   vec4 shadowTexels[VOXELGI_MAX_LIGHTS];
   // x: 1 when every light that casts shadows (every light but a headlight) has maps valid
-  // for the pixels
+  // for the pixels; y: 1 when the layers have translucent casters' transmittance
   ivec4 shadowInfo;
 };
 

@@ -355,7 +355,18 @@ int SamplerBindings::Add(const Volume3D& volume)
 
 int SamplerBindings::Add(const ShadowMapArray& maps)
 {
-  return this->Keep(maps.BindSampler(this->Window), GL_TEXTURE_2D_ARRAY);
+  return this->AddArray(maps.GetTexture());
+}
+
+int SamplerBindings::AddArray(unsigned int texture)
+{
+  const int unit = this->Window->GetTextureUnitManager()->Allocate();
+  if (unit >= 0)
+  {
+    this->Window->GetState()->vtkglActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
+    glBindTexture(GL_TEXTURE_2D_ARRAY, texture);
+  }
+  return this->Keep(unit, GL_TEXTURE_2D_ARRAY);
 }
 
 //------------------------------------------------------------------------------
@@ -467,17 +478,6 @@ unsigned int ShadowMapArray::PrepareLayer(int layer)
   glDrawBuffer(GL_NONE);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(previous));
   return this->Framebuffer;
-}
-
-int ShadowMapArray::BindSampler(vtkOpenGLRenderWindow* renWin) const
-{
-  const int unit = renWin->GetTextureUnitManager()->Allocate();
-  if (unit >= 0)
-  {
-    renWin->GetState()->vtkglActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
-    glBindTexture(GL_TEXTURE_2D_ARRAY, this->Texture);
-  }
-  return unit;
 }
 
 std::size_t ShadowMapArray::Bytes() const

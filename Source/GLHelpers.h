@@ -138,6 +138,8 @@ public:
 
   int Add(const Volume3D& volume);
   int Add(const ShadowMapArray& maps);
+  /// Bind the GL_TEXTURE_2D_ARRAY texture named `texture`.
+  int AddArray(unsigned int texture);
   /// False when a unit could not be had (the window's units are all taken): a dispatch
   /// would then sample whatever the program's stale sampler uniforms point at; skip it.
   bool Complete() const { return !this->Failed; }
@@ -191,7 +193,8 @@ public:
   bool Allocate(int size, int layers);
   /// Framebuffer name with `layer` attached as depth, to bind through vtkOpenGLState.
   unsigned int PrepareLayer(int layer);
-  int BindSampler(vtkOpenGLRenderWindow* renWin) const;
+  /// The depth texture's name (a depth attachment for the layers' translucent casters).
+  unsigned int GetTexture() const { return this->Texture; }
   int Size() const { return this->Resolution; }
   int Layers() const { return this->LayerCount; }
   bool IsAllocated() const { return this->Texture != 0 || this->Framebuffer != 0; }

@@ -1,5 +1,7 @@
 #include "PropReader.h"
 
+#include "SceneBuffers.h"
+
 #include "ImageSliceProxies.h"
 #include "ImposterProxies.h"
 #include "PropKeys.h"
@@ -135,7 +137,12 @@ std::string LeftOutReason(vtkProp* prop)
   }
   if (!actor->HasOpaqueGeometry())
   {
-    return std::string(prop->GetClassName()) + " (translucent)";
+    // Its shadows come from its GPU-resident triangles (ShadowTransmittance).
+    const std::string unreadable =
+      ImposterProxies::Applies(actor) ? "points drawn as spheres" : ComputeUnreadable(actor);
+    return unreadable.empty()
+      ? unreadable
+      : std::string(prop->GetClassName()) + " (translucent, " + unreadable + ")";
   }
   return std::string();
 }
@@ -363,6 +370,9 @@ void PropReader::ReadAll(vtkProp* prop, PropReading& reading)
     std::copy(b, b + 6, reading.Bounds);
   }
   reading.LeftOut = reading.HasBounds ? LeftOutReason(prop) : std::string();
+  vtkActor* actor = vtkActor::SafeDownCast(prop);
+  reading.Translucent =
+    reading.HasBounds && reading.LeftOut.empty() && actor && !actor->HasOpaqueGeometry();
   // After what modifies the prop while it is read: the bounds (they update its pipeline),
   // the keys (VTK modifies a prop when it first gets property keys) and whether it is
   // opaque (asking creates a mapper's default lookup table). The signature keys the records

@@ -264,6 +264,7 @@ bool SceneScan::Collect(vtkRenderer* renderer, bool inRender, bool distributed,
     records.push_back(MakeRecord(
       prop, actor, recordSignature, reading.InputTime, previous.Find(actor, records.size()),
       warnings));
+    records.back().Translucent = reading.Translucent;
     Merge(bounds, b, records.size() == 1 && volumes.empty());
     anySpecular = anySpecular || actor->GetProperty()->GetSpecular() > 0.0;
   }

@@ -49,6 +49,9 @@ struct ActorRecord
   // Which scan last saw its data, mapper or actor change (a new one where the scan cannot
   // tell): stages that keep results per actor compare it (ShadowMaps).
   std::uint64_t Revision = 0;
+  // Translucent (VTK draws it in its translucent step): it casts shadows that pass part of
+  // the light (ShadowTransmittance) and is not voxelized.
+  bool Translucent = false;
 };
 
 /// What the scan has to tell the user; the pass reports it.

@@ -16,6 +16,7 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtkProp.h"
+#include "vtkProperty.h"
 #include "vtkRenderer.h"
 #include "vtk_glew.h"
 
@@ -219,7 +220,30 @@ bool ShadowMaps::Prepare(const Frame& frame, std::string& error, std::string& no
     error = "could not allocate the shadow maps' uniform buffer";
     return false;
   }
+  this->PrepareTransmittance(frame, note);
   return true;
+}
+
+bool ShadowMaps::PrepareTransmittance(const Frame& frame, std::string& note)
+{
+  const bool translucent = this->HasMaps() &&
+    std::any_of(frame.Actors->begin(), frame.Actors->end(),
+      [](const ActorRecord& record) { return record.Translucent; });
+  const std::size_t before = this->Transmittance.Bytes();
+  std::string error;
+  bool ok = this->Transmittance.Prepare(
+    translucent ? this->Maps.Size() : 0, translucent ? this->Maps.Layers() : 0, error);
+  if (!ok)
+  {
+    note = error + ": translucent actors cast no shadow.";
+    this->Transmittance.Prepare(0, 0, error);
+  }
+  if (this->Transmittance.Bytes() != before)
+  {
+    this->Drawn.assign(this->Drawn.size(), LayerKey{}); // no layer holds its transmittance
+  }
+  this->Data.shadowInfo[1] = this->Transmittance.IsAllocated() ? 1 : 0;
+  return ok;
 }
 
 bool ShadowMaps::Allot(int size, int layers, std::string& note)
@@ -273,6 +297,7 @@ bool ShadowMaps::Allot(int size, int layers, std::string& note)
 void ShadowMaps::Bind(GLProgram& program, SamplerBindings& samplers) const
 {
   program.SetInt("shadowMaps", samplers.Add(this->Maps));
+  this->Transmittance.Bind(program, samplers);
   this->Buffer.BindUniform(VOXELGI_SHADOW_BLOCK_BINDING);
 }
 
@@ -301,6 +326,9 @@ void ShadowMaps::Run(const Frame& frame)
     vtkOpenGLState::ScopedglEnableDisable cull(ostate, GL_CULL_FACE);
     vtkOpenGLState::ScopedglDepthMask depthMask(ostate);
     vtkOpenGLState::ScopedglDepthFunc depthFunc(ostate);
+    vtkOpenGLState::ScopedglEnableDisable blend(ostate, GL_BLEND);
+    vtkOpenGLState::ScopedglBlendFuncSeparate blendFunc(ostate);
+    vtkOpenGLState::ScopedglClearColor clearColor(ostate);
     ostate->vtkglViewport(0, 0, size, size);
     ostate->vtkglDisable(GL_SCISSOR_TEST);
     ostate->vtkglEnable(GL_DEPTH_TEST);
@@ -350,7 +378,11 @@ void ShadowMaps::ReadCasters(const Frame& frame)
     if (record.Actor)
     {
       Caster caster{ record.Actor, record.Revision, {}, {},
-        this->Voxels.Resident(frame, record.Actor) };
+        this->Voxels.Resident(frame, record.Actor), record.Translucent };
+      if (caster.Translucent && (!caster.Buffers || !this->Transmittance.IsAllocated()))
+      {
+        continue; // only its GPU-resident triangles are drawn into the transmittance
+      }
       std::copy_n(&record.Actor->GetMatrix()->Element[0][0], 16, caster.Matrix.begin());
       const double* bounds = record.Actor->GetBounds();
       caster.Bounds = { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 }; // uninitialized: never culled
@@ -390,6 +422,13 @@ void ShadowMaps::DrawLayer(const Frame& frame, int layer, vtkMatrix4x4* clipFrom
   {
     stage.emplace(*frame.Clock, stage::ShadowMaps);
   }
+  this->DrawCasters(frame, layer, key, renderer);
+  drawn = std::move(key);
+}
+
+void ShadowMaps::DrawCasters(
+  const Frame& frame, int layer, const LayerKey& key, vtkRenderer* renderer)
+{
   vtkOpenGLState* ostate = frame.Window->GetState();
   ostate->vtkglBindFramebuffer(GL_FRAMEBUFFER, this->Maps.PrepareLayer(layer));
   ostate->vtkglClearDepth(1.0);
@@ -401,7 +440,7 @@ void ShadowMaps::DrawLayer(const Frame& frame, int layer, vtkMatrix4x4* clipFrom
     {
       this->Copies.Draw(caster.Actor, renderer);
     }
-    resident = resident || caster.Buffers;
+    resident = resident || (caster.Buffers && !caster.Translucent);
   }
   if (resident)
   {
@@ -409,7 +448,7 @@ void ShadowMaps::DrawLayer(const Frame& frame, int layer, vtkMatrix4x4* clipFrom
     this->Depth.Begin(frame.Window);
     for (const Caster& caster : key.Casters)
     {
-      if (caster.Buffers)
+      if (caster.Buffers && !caster.Translucent)
       {
         const std::array<float, 16> m =
           ClipFromModel(key.ClipFromWorld, caster.Matrix, caster.Buffers->Shift);
@@ -418,7 +457,25 @@ void ShadowMaps::DrawLayer(const Frame& frame, int layer, vtkMatrix4x4* clipFrom
     }
     this->Depth.End();
   }
-  drawn = std::move(key);
+  if (this->Transmittance.IsAllocated())
+  {
+    // Cleared in every layer, translucent casters or not: readers look each layer up.
+    this->Transmittance.Begin(frame.Window, layer, this->Maps.GetTexture());
+    for (const Caster& caster : key.Casters)
+    {
+      if (caster.Translucent)
+      {
+        const std::array<float, 16> m =
+          ClipFromModel(key.ClipFromWorld, caster.Matrix, caster.Buffers->Shift);
+        vtkProperty* property = caster.Actor->GetProperty();
+        const double* c = property->GetDiffuseColor();
+        const float rgba[4] = { static_cast<float>(c[0]), static_cast<float>(c[1]),
+          static_cast<float>(c[2]), static_cast<float>(property->GetOpacity()) };
+        this->Transmittance.Draw(*caster.Buffers, m.data(), rgba);
+      }
+    }
+    this->Transmittance.End(frame.Window);
+  }
 }
 
 }

@@ -2,7 +2,8 @@
  * ShadowMaps stage (shadow_maps.glsl reads them): a depth map per directional or spot light
  * and six (a cube) per point light, rendered from the light with the voxelized actors as
  * casters (their GPU-resident triangles where compute voxelization reads them: ShadowDepth;
- * the others through copies of their mappers); a layer whose view and casters did not change
+ * the others through copies of their mappers), and beside them the light that translucent
+ * actors let through (ShadowTransmittance); a layer whose view and casters did not change
  * since it was drawn is kept. Also the matrices from grid coordinates to each map's clip space, in
  * the `VoxelShadowBlock` uniform block (Shaders/shadow_block.h). The voxel lighting and the
  * pixels' shadows (ConeTrace) look them up. Headlights have none: their shadows are hidden
@@ -15,6 +16,7 @@
 #include "GLHelpers.h"
 #include "MapperCopies.h"
 #include "ShadowDepth.h"
+#include "ShadowTransmittance.h"
 #include "ViewRenderer.h" // for ViewRenderer
 #include "shader_interface.h"
 #include "shadow_block.h"
@@ -61,6 +63,8 @@ public:
   void Run(const Frame& frame);
   /// Whether any light has a map.
   bool HasMaps() const { return this->Maps.Layers() > 0; }
+  /// GPU memory of the maps and their transmittance.
+  std::size_t Bytes() const { return this->Maps.Bytes() + this->Transmittance.Bytes(); }
   /// Bind the block at VOXELGI_SHADOW_BLOCK_BINDING and the maps to `program`'s (in use)
   /// `shadowMaps` sampler.
   void Bind(GLProgram& program, SamplerBindings& samplers) const;
@@ -74,6 +78,7 @@ public:
     this->Buffer.Release();
     this->Copies.ReleaseGraphicsResources(window);
     this->Depth.ReleaseGraphicsResources();
+    this->Transmittance.ReleaseGraphicsResources();
     this->View.Release();
   }
 
@@ -105,6 +110,7 @@ private:
     std::array<double, 16> Matrix;
     std::array<double, 6> Bounds;
     const SceneBuffers::Entry* Buffers; // null: drawn through a copy of its mapper
+    bool Translucent;                   // drawn into the layer's transmittance
     bool operator==(const Caster& other) const
     {
       return this->Actor == other.Actor && this->Revision == other.Revision &&
@@ -123,6 +129,12 @@ private:
   };
   /// The frame's voxelized actors as casters (this->Casters).
   void ReadCasters(const Frame& frame);
+  /// Allocate the transmittance layers while any actor of the frame is translucent (else
+  /// free them); layers drawn without them are drawn again. False (with `note`) when they
+  /// do not fit: translucent actors then cast no shadow.
+  bool PrepareTransmittance(const Frame& frame, std::string& note);
+  /// Draw the casters of `key` into the bound layer: opaque depth, then transmittance.
+  void DrawCasters(const Frame& frame, int layer, const LayerKey& key, vtkRenderer* renderer);
   /// Draw `layer` from `clipFromWorld` unless it holds that view of the same casters; the
   /// first layer drawn starts the stage's clock.
   void DrawLayer(const Frame& frame, int layer, vtkMatrix4x4* clipFromWorld,
@@ -132,6 +144,7 @@ private:
   ViewRenderer View; // draws through each light's camera
   MapperCopies Copies; // depth-only draws never switch the user's mappers
   ShadowDepth Depth;   // the actors with GPU-resident triangles
+  ShadowTransmittance Transmittance; // the translucent actors' (GPU-resident) triangles
   std::vector<LayerKey> Drawn; // per layer of the allocated maps
   std::vector<Caster> Casters; // this Run's
   Block Data{};

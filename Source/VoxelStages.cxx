@@ -67,7 +67,7 @@ unsigned long long VoxelStages::AllocatedBytes(int resource) const
     case vtkVoxelGIPass::RESOURCE_DIRECTIONAL:
       return this->Mipmap.MemoryBytes();
     case vtkVoxelGIPass::RESOURCE_SHADOW_MAPS:
-      return this->Shadows.Maps.Bytes();
+      return this->Shadows.Bytes();
     case vtkVoxelGIPass::RESOURCE_SCENE_BUFFERS:
       return this->Voxelize->SceneBytes() +
         (this->Bounce.GetIncident() ? this->Bounce.GetIncident()->Bytes() : 0);
@@ -79,7 +79,7 @@ unsigned long long VoxelStages::AllocatedBytes(int resource) const
 unsigned long long VoxelStages::MemoryBytes() const
 {
   return this->Voxelize->MemoryBytes() + this->Lighting.MemoryBytes() +
-    this->Mipmap.MemoryBytes() + this->Shadows.Maps.Bytes();
+    this->Mipmap.MemoryBytes() + this->Shadows.Bytes();
 }
 
 void VoxelStages::ReleaseGraphicsResources(vtkWindow* window)

@@ -188,9 +188,9 @@ void VoxelizePass::Run(const Frame& frame)
   this->PropEmissions.clear();
   for (const ActorRecord& record : *frame.Actors)
   {
-    if (!full && !record.Dynamic)
+    if ((!full && !record.Dynamic) || record.Translucent)
     {
-      continue; // its voxels are kept
+      continue; // its voxels are kept; a translucent actor's share of light is in the shadows
     }
     const SceneBuffers::Entry* buffers = this->Resident(frame, record.Actor);
     if (buffers)

@@ -19,7 +19,8 @@
 //   VoxelGIErrorStudy [--egl] SCENE REFERENCE.pfm OUT.csv [frames]
 //
 // SCENE: a name vtkVoxelGIScenes::AddScene knows (cornell, glossy, isosurface, glyphs, emissive,
-// streamlines, volume, pointroom, lamproom, emitterroom, contacts, contactsheadlight), or a
+// streamlines, volume, pointroom, lamproom, emitterroom, contacts, contactsheadlight,
+// translucent), or a
 // description FILE.json (Testing/Reference/study_scene.sh
 // renders its reference and runs this). --egl renders headless through EGL
 // (vtkVoxelGIEGLRenderWindow), as on a GPU machine without X.
@@ -312,10 +313,10 @@ int main(int argc, char* argv[])
       cameraMs = timeFrames(false);
     }
 
-    // VTK draws volumes over the composite: where the scene has one, the window's image is
-    // what the reference shows.
+    // VTK draws volumes and translucent actors over the composite: then the window's image
+    // is what the reference shows.
     vtkNew<vtkFloatArray> pixels;
-    if (renderer->GetVolumes()->GetNumberOfItems() > 0 ||
+    if (vtkVoxelGIScenes::DrawsOverComposite(renderer) ||
       !(usesPass && gi->GetEnabled() &&
         gi->GetFloatImage(vtkVoxelGIPass::IMAGE_COMPOSITE, pixels)))
     {

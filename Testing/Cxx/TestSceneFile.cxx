@@ -226,7 +226,9 @@ int Refused()
     return actor.GetPointer();
   };
   vtkNew<vtkSphereSource> sphere;
-  add(sphere)->GetProperty()->SetOpacity(0.5);
+  vtkProperty* glass = add(sphere)->GetProperty();
+  glass->SetOpacity(0.5);
+  glass->SetSpecular(0.5);
   add(sphere)->GetProperty()->SetRepresentationToWireframe();
   vtkNew<vtkTexture> texture;
   add(sphere)->SetTexture(texture);
@@ -261,7 +263,7 @@ int Refused()
   VOXELGI_CHECK(!file->Write(renderer), "written");
   const std::string problems = file->GetProblems();
   std::cout << "problems:\n" << problems;
-  for (const char* expected : { "prop 0 (vtkOpenGLActor): translucent",
+  for (const char* expected : { "prop 0 (vtkOpenGLActor): translucent (opacity 0.500000) with scalar colours, emission or a specular term",
          "prop 1 (vtkOpenGLActor): wireframe or points representation", "prop 2 (vtkOpenGLActor): textured",
          "prop 3 (vtkOpenGLActor): ambient term that is not the background's sky light",
          "prop 4 (vtkOpenGLActor): lines or vertices", "prop 5 (vtkOpenGLActor): mapper vtkOpenGLGlyph3DMapper",

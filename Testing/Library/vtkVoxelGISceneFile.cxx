@@ -228,13 +228,20 @@ std::string MaterialProblem(vtkActor* actor, const double background[3], bool co
   {
     return "non-finite material values";
   }
-  if (p->GetOpacity() < 1.0)
-  {
-    return "translucent (opacity " + std::to_string(p->GetOpacity()) + ")";
-  }
   if (actor->GetTexture() || p->GetNumberOfTextures() > 0)
   {
     return "textured";
+  }
+  // A translucent surface is written as Cycles' transparent BSDF over its own (Material).
+  if (p->GetOpacity() < 1.0 &&
+    (colored || (keys && keys->Has(vtkVoxelGIPass::EMISSION())) || p->GetSpecular() > 0.0))
+  {
+    return "translucent (opacity " + std::to_string(p->GetOpacity()) +
+      ") with scalar colours, emission or a specular term";
+  }
+  if (p->GetOpacity() >= 1.0 && !actor->HasOpaqueGeometry())
+  {
+    return "translucent through its scalar colours' alpha";
   }
   if (p->GetInterpolation() == VTK_PBR)
   {
@@ -286,6 +293,13 @@ Json::Value Material(vtkActor* actor, bool colored, const std::string& normals)
   {
     m["vertex_colors"] = true;
   }
+  if (p->GetOpacity() < 1.0)
+  {
+    // Of the light that reaches it, (1 - opacity) passes, filtered by its colour (as the
+    // pass's shadows filter it); the camera sees through it unfiltered, as VTK blends it.
+    m["opacity"] = p->GetOpacity();
+    m["transmit"] = ToJson(p->GetDiffuseColor());
+  }
   m["normals"] = normals;
   Json::Value vtk;
   vtk["ambient"] = p->GetAmbient();
@@ -295,6 +309,10 @@ Json::Value Material(vtkActor* actor, bool colored, const std::string& normals)
   vtk["specular"] = p->GetSpecular();
   vtk["specular_color"] = ToJson(p->GetSpecularColor());
   vtk["specular_power"] = p->GetSpecularPower();
+  if (p->GetOpacity() < 1.0)
+  {
+    vtk["opacity"] = p->GetOpacity();
+  }
   m["vtk"] = vtk;
   return m;
 }
@@ -997,6 +1015,10 @@ vtkSmartPointer<vtkActor> MaterialActor(
   p->SetSpecular(Number(Field(vtk, "specular", v), v + "specular"));
   p->SetSpecularColor(Vector(Field(vtk, "specular_color", v), v + "specular_color").data());
   p->SetSpecularPower(Number(Field(vtk, "specular_power", v), v + "specular_power"));
+  if (vtk.isMember("opacity"))
+  {
+    p->SetOpacity(Number(vtk["opacity"], v + "opacity"));
+  }
   if (m.isMember("emission"))
   {
     const Vec3 e = Vector(m["emission"], where + ".emission");

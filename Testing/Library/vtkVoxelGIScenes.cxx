@@ -3,6 +3,7 @@
 #include "vtkVoxelGIPass.h"
 
 #include "vtkActor.h"
+#include "vtkActorCollection.h"
 #include "vtkAssignAttribute.h"
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
@@ -38,6 +39,7 @@
 #include "vtkTriangleFilter.h"
 #include "vtkTubeFilter.h"
 #include "vtkVolume.h"
+#include "vtkVolumeCollection.h"
 #include "vtkVolumeProperty.h"
 
 #include <array>
@@ -582,6 +584,32 @@ void vtkVoxelGIScenes::AddContacts(vtkRenderer* renderer, bool headlight)
   AimCamera(renderer, { 0.0, 5.0, 11.5 }, { -0.3, 0.8, -0.5 }, 42.0);
 }
 
+void vtkVoxelGIScenes::AddTranslucentSurfaces(vtkRenderer* renderer)
+{
+  if (!renderer)
+  {
+    return;
+  }
+  const Vec3 grey{ { 0.7, 0.7, 0.7 } };
+  AddQuad(renderer, { -6, 0, -3 }, { -6, 0, 6 }, { 6, 0, -3 }, grey);
+  AddQuad(renderer, { -6, 0, -3 }, { 6, 0, -3 }, { -6, 5, -3 }, grey);
+  // A blue glass canopy over a white block, an orange glass ball, an opaque red ball.
+  AddQuad(renderer, { -4.5, 2.4, -2.5 }, { -4.5, 2.4, 1.5 }, { -0.8, 2.4, -2.5 },
+    { 0.2, 0.5, 0.9 })
+    ->GetProperty()
+    ->SetOpacity(0.5);
+  AddBlock(renderer, -2.4, -0.6, 1.0, 1.0, 1.0, 20.0, { 0.85, 0.85, 0.85 });
+  AddSphere(renderer, { 1.6, 1.0, 0.2 }, 1.0, { 0.95, 0.55, 0.1 })->GetProperty()->SetOpacity(0.4);
+  AddSphere(renderer, { 3.9, 0.6, -1.6 }, 0.6, { 0.8, 0.2, 0.15 });
+  vtkNew<vtkLight> sun;
+  sun->SetLightTypeToSceneLight();
+  sun->SetPositional(false);
+  sun->SetPosition(-3.0, 8.0, 5.0);
+  sun->SetFocalPoint(0.0, 0.0, 0.0);
+  renderer->AddLight(sun);
+  AimCamera(renderer, { 0.0, 5.0, 11.5 }, { -0.3, 0.8, -0.5 }, 42.0);
+}
+
 bool vtkVoxelGIScenes::AddScene(vtkRenderer* renderer, const char* name)
 {
   if (!renderer || !name)
@@ -636,11 +664,34 @@ bool vtkVoxelGIScenes::AddScene(vtkRenderer* renderer, const char* name)
   {
     AddContacts(renderer, true);
   }
+  else if (!std::strcmp(name, "translucent"))
+  {
+    AddTranslucentSurfaces(renderer);
+  }
   else
   {
     return false;
   }
   return true;
+}
+
+bool vtkVoxelGIScenes::DrawsOverComposite(vtkRenderer* renderer)
+{
+  if (renderer->GetVolumes()->GetNumberOfItems() > 0)
+  {
+    return true;
+  }
+  vtkActorCollection* actors = renderer->GetActors();
+  vtkCollectionSimpleIterator it;
+  actors->InitTraversal(it);
+  while (vtkActor* actor = actors->GetNextActor(it))
+  {
+    if (actor->GetVisibility() && !actor->HasOpaqueGeometry())
+    {
+      return true;
+    }
+  }
+  return false;
 }
 
 void vtkVoxelGIScenes::PrintSelf(ostream& os, vtkIndent indent)

@@ -74,13 +74,26 @@ public:
    * headlight ("contactsheadlight"). Seams, fins and touching points must darken.
    */
   static void AddContacts(vtkRenderer* renderer, bool headlight);
+  /**
+   * Translucent surfaces under a sun: a blue glass canopy (opacity 0.5) over a white block
+   * and an orange glass ball (opacity 0.4) beside an opaque red ball, on a floor against a
+   * wall ("translucent"). Their shadows pass (1 - opacity) of the light, in their colour.
+   */
+  static void AddTranslucentSurfaces(vtkRenderer* renderer);
 
   /**
    * Add the scene called `name`: "cornell", "glossy", "isosurface", "glyphs", "emissive",
-   * "streamlines", "volume", "pointroom", "lamproom", "emitterroom", "contacts" or
-   * "contactsheadlight". Returns false (and adds nothing) for another name.
+   * "streamlines", "volume", "pointroom", "lamproom", "emitterroom", "contacts",
+   * "contactsheadlight" or "translucent". Returns false (and adds nothing) for another name.
    */
   static bool AddScene(vtkRenderer* renderer, const char* name);
+
+  /**
+   * Whether VTK draws part of `renderer`'s scene over the pass's composite (volumes and
+   * translucent actors, in its volumetric and translucent steps): then the window's image,
+   * not the composite, is what a reference shows.
+   */
+  static bool DrawsOverComposite(vtkRenderer* renderer);
 
   /**
    * Add an actor drawing `source`'s polygonal output in colour (r, g, b) to `renderer`, and

@@ -89,6 +89,21 @@ for obj in bpy.context.scene.objects:
                 links.new(shader.outputs[0], both.inputs[0])
                 links.new(glossy.outputs[0], both.inputs[1])
                 shader = both
+            if desc_material.get("opacity", 1.0) < 1.0:
+                # (1 - opacity) of the light passes, filtered by the surface's colour; camera
+                # rays see through unfiltered (VTK blends what lies behind untinted).
+                transparent = nodes.new("ShaderNodeBsdfTransparent")
+                path = nodes.new("ShaderNodeLightPath")
+                tint = nodes.new("ShaderNodeMixRGB")
+                tint.inputs["Color1"].default_value = (*desc_material["transmit"], 1.0)
+                tint.inputs["Color2"].default_value = (1.0, 1.0, 1.0, 1.0)
+                links.new(path.outputs["Is Camera Ray"], tint.inputs["Fac"])
+                links.new(tint.outputs["Color"], transparent.inputs["Color"])
+                mix = nodes.new("ShaderNodeMixShader")
+                mix.inputs["Fac"].default_value = desc_material["opacity"]
+                links.new(transparent.outputs[0], mix.inputs[1])
+                links.new(shader.outputs[0], mix.inputs[2])
+                shader = mix
         links.new(shader.outputs[0], output.inputs["Surface"])
 
 scene = bpy.context.scene

@@ -243,30 +243,48 @@ TEST_F(ScanFixture, VoxelSettingsRebuildWhateverThePolicy)
   EXPECT_EQ(this->Update.Grid.Resolution, 64);
 }
 
-TEST_F(ScanFixture, TranslucentAndWireframeAreLeftOutWithNoticesThatCount)
+/// A translucent sphere at x whose triangles the shadows cannot read (a backface property).
+void AddUnreadableTranslucentSphere(vtkRenderer* renderer, double x)
+{
+  vtkActor* actor = AddSphere(renderer, x);
+  actor->GetProperty()->SetOpacity(0.2);
+  vtkNew<vtkProperty> back;
+  actor->SetBackfaceProperty(back);
+}
+
+TEST_F(ScanFixture, TranslucentCastsAndTheUnreadableAreLeftOutWithNoticesThatCount)
 {
   AddSphere(this->Renderer, 0.0);
   AddSphere(this->Renderer, 2.0)->GetProperty()->SetOpacity(0.5);
   AddSphere(this->Renderer, 4.0)->GetProperty()->SetRepresentationToWireframe();
   ASSERT_TRUE(this->Next());
-  EXPECT_EQ(this->Scan.GetRecords().size(), 1u);
+  // The translucent sphere casts shadows that pass part of the light (not voxelized).
+  ASSERT_EQ(this->Scan.GetRecords().size(), 2u);
+  EXPECT_FALSE(this->Scan.GetRecords()[0].Translucent);
+  EXPECT_TRUE(this->Scan.GetRecords()[1].Translucent);
   ASSERT_EQ(this->Messages.Warnings.size(), 1u);
   EXPECT_EQ(this->Messages.Warnings[0],
-    "Rendered by VTK without voxel GI: 1 x vtkOpenGLActor (translucent); "
-    "1 x vtkOpenGLActor (wireframe representation).");
+    "Rendered by VTK without voxel GI: 1 x vtkOpenGLActor (wireframe representation).");
   ASSERT_TRUE(this->Next());
   EXPECT_TRUE(this->Messages.Warnings.empty()); // said once
-  AddSphere(this->Renderer, 6.0)->GetProperty()->SetOpacity(0.2);
-  ASSERT_TRUE(this->Next());
-  ASSERT_EQ(this->Messages.Warnings.size(), 1u); // the count of a kind doubled: said again
-  EXPECT_EQ(this->Messages.Warnings[0], "Rendered by VTK without voxel GI: 2 x vtkOpenGLActor (translucent).");
-  AddSphere(this->Renderer, 8.0)->GetProperty()->SetOpacity(0.2);
-  ASSERT_TRUE(this->Next());
-  EXPECT_TRUE(this->Messages.Warnings.empty()); // 3 of a kind said at 2
-  AddSphere(this->Renderer, 10.0)->GetProperty()->SetOpacity(0.2);
+  AddUnreadableTranslucentSphere(this->Renderer, 6.0);
   ASSERT_TRUE(this->Next());
   ASSERT_EQ(this->Messages.Warnings.size(), 1u);
-  EXPECT_EQ(this->Messages.Warnings[0], "Rendered by VTK without voxel GI: 4 x vtkOpenGLActor (translucent).");
+  EXPECT_EQ(this->Messages.Warnings[0],
+    "Rendered by VTK without voxel GI: 1 x vtkOpenGLActor (translucent, a backface property).");
+  AddUnreadableTranslucentSphere(this->Renderer, 8.0);
+  ASSERT_TRUE(this->Next());
+  ASSERT_EQ(this->Messages.Warnings.size(), 1u); // the count of a kind doubled: said again
+  EXPECT_EQ(this->Messages.Warnings[0],
+    "Rendered by VTK without voxel GI: 2 x vtkOpenGLActor (translucent, a backface property).");
+  AddUnreadableTranslucentSphere(this->Renderer, 10.0);
+  ASSERT_TRUE(this->Next());
+  EXPECT_TRUE(this->Messages.Warnings.empty()); // 3 of a kind said at 2
+  AddUnreadableTranslucentSphere(this->Renderer, 12.0);
+  ASSERT_TRUE(this->Next());
+  ASSERT_EQ(this->Messages.Warnings.size(), 1u);
+  EXPECT_EQ(this->Messages.Warnings[0],
+    "Rendered by VTK without voxel GI: 4 x vtkOpenGLActor (translucent, a backface property).");
 }
 
 TEST_F(ScanFixture, OutlineInWireframeNeedsNoNotice)

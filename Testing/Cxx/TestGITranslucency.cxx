@@ -1,0 +1,210 @@
+// Translucent surfaces in GI (ShadowTransmittance): a plane of opacity a and colour c between
+// a sun and a floor passes (1 - a) c of the light, in the voxels' light and in the pixels'
+// shadows, whether the actor's property or its scalars through a lookup table colour it; a
+// translucent surface behind the receiver takes nothing away; VTK still draws it.
+#include "VoxelGITestUtilities.h"
+#include "vtkVoxelGIPass.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkLight.h"
+#include "vtkLookupTable.h"
+#include "vtkMapper.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkProperty.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+
+#include <array>
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <string>
+
+namespace
+{
+using glm::dvec3;
+using voxelgi_test::Within;
+
+/// A floor [0, 4]^2 at y = 0 under a sun straight above, seen from above (100 x 100 pixels).
+struct SunOverFloor
+{
+  voxelgi_test::GIWindow View{ nullptr, 64, 100, 0 };
+  SunOverFloor()
+  {
+    vtkRenderer* renderer = this->View.Renderer;
+    renderer->AutomaticLightCreationOff();
+    vtkNew<vtkLight> sun;
+    sun->SetLightTypeToSceneLight();
+    sun->SetPositional(false);
+    sun->SetPosition(2.0, 10.0, 2.0);
+    sun->SetFocalPoint(2.0, 0.0, 2.0);
+    renderer->AddLight(sun);
+    voxelgi_test::AddQuad(
+      renderer, dvec3(0.0, 0.0, 0.0), dvec3(0.0, 0.0, 4.0), dvec3(4.0, 0.0, 0.0), 0.8, 0.8, 0.8);
+    vtkCamera* camera = renderer->GetActiveCamera();
+    camera->SetPosition(2.0, 8.0, 2.0);
+    camera->SetFocalPoint(2.0, 0.0, 2.0);
+    camera->SetViewUp(0.0, 0.0, -1.0);
+    camera->SetViewAngle(30.0);
+  }
+  /// A translucent plane over [1, 3]^2 at height y, of colour rgb and opacity alpha.
+  vtkActor* AddPlane(double y, const dvec3& rgb, double alpha)
+  {
+    vtkActor* plane = voxelgi_test::AddQuad(this->View.Renderer, dvec3(1.0, y, 1.0),
+      dvec3(1.0, y, 3.0), dvec3(3.0, y, 1.0), rgb.x, rgb.y, rgb.z);
+    plane->GetProperty()->SetOpacity(alpha);
+    return plane;
+  }
+  /// Render (EXIT_SUCCESS, else a failure is printed); the floor's radiance per channel under the plane's middle against its open part,
+  /// in the voxels (summed over the floor's voxel layers) and in the composite's pixels.
+  int Measure(std::array<double, 3>& voxels, std::array<double, 3>& pixels, double& lit)
+  {
+    this->View.Renderer->ResetCameraClippingRange();
+    voxelgi_test::Messages log(this->View.GI);
+    this->View.Window->Render();
+    VOXELGI_CHECK(this->View.GI->GetGIActive() && voxelgi_test::AllFinite(this->View.GI),
+      "GI did not run");
+    VOXELGI_CHECK(!log.Has("translucent"), "a translucent actor was left out: " << log.Text);
+    vtkNew<vtkImageData> radiance;
+    VOXELGI_CHECK(
+      this->View.GI->GetVoxelVolume(vtkVoxelGIPass::VOLUME_RADIANCE, radiance), "no voxels");
+    vtkSmartPointer<vtkFloatArray> composite = voxelgi_test::Composite(this->View.GI);
+    VOXELGI_CHECK(composite, "no composite");
+    lit = voxelgi_test::MeanOver(composite, 100, 8, 8, 16, 16, 1);
+    for (int c = 0; c < 3; ++c)
+    {
+      voxels[c] = FloorRadiance(radiance, 2.0, 2.0, c) / FloorRadiance(radiance, 0.4, 0.4, c);
+      pixels[c] = voxelgi_test::MeanOver(composite, 100, 45, 45, 55, 55, c) /
+        voxelgi_test::MeanOver(composite, 100, 8, 8, 16, 16, c);
+    }
+    return EXIT_SUCCESS;
+  }
+  /// The radiance of the floor's voxels (channel c, summed over the voxel layers at y = 0)
+  /// under the world point (x, 0, z).
+  static double FloorRadiance(vtkImageData* radiance, double x, double z, int c)
+  {
+    const double* origin = radiance->GetOrigin(); // the first voxel's centre
+    const double h = radiance->GetSpacing()[0];
+    const int* dims = radiance->GetDimensions();
+    const int i = static_cast<int>(std::lround((x - origin[0]) / h));
+    const int k = static_cast<int>(std::lround((z - origin[2]) / h));
+    const int j0 = static_cast<int>(std::lround((0.0 - origin[1]) / h));
+    double sum = 0.0;
+    for (int j = std::max(j0 - 2, 0); j <= std::min(j0 + 2, dims[1] - 1); ++j)
+    {
+      int ijk[3] = { i, j, k };
+      sum += radiance->GetPointData()->GetScalars()->GetComponent(radiance->ComputePointId(ijk), c);
+    }
+    return sum;
+  }
+};
+
+/// Whether each channel of the measured ratios is within 5 % of (1 - alpha) rgb.
+bool Transmits(const std::string& what, const dvec3& rgb, double alpha,
+  const std::array<double, 3>& voxels, const std::array<double, 3>& pixels)
+{
+  bool ok = true;
+  for (int c = 0; c < 3; ++c)
+  {
+    const double expected = (1.0 - alpha) * rgb[c];
+    std::cout << what << ", channel " << c << ": (1 - a) c " << expected << ", voxels "
+              << voxels[c] << ", pixels " << pixels[c] << std::endl;
+    const std::string channel = what + ", channel " + std::to_string(c);
+    ok = Within(channel + ": voxels' transmittance error", std::abs(voxels[c] - expected), 0.05,
+           0.05) && ok;
+    ok = Within(channel + ": pixels' transmittance error", std::abs(pixels[c] - expected), 0.05,
+           0.05) && ok;
+  }
+  return ok;
+}
+
+//------------------------------------------------------------------------------
+// A plane coloured by its property: (1 - a) c of the sun passes, for three opacities.
+int PlaneTransmittance()
+{
+  bool ok = true;
+  const dvec3 rgb(1.0, 0.6, 0.3);
+  for (const double alpha : { 0.25, 0.5, 0.75 })
+  {
+    SunOverFloor scene;
+    scene.AddPlane(1.0, rgb, alpha);
+    std::array<double, 3> voxels{}, pixels{};
+    double lit = 0.0;
+    VOXELGI_CHECK(scene.Measure(voxels, pixels, lit) == EXIT_SUCCESS, "not measured");
+    VOXELGI_CHECK(lit > 0.1, "the floor's pixels are dark: " << lit);
+    ok = Transmits("opacity " + std::to_string(alpha), rgb, alpha, voxels, pixels) && ok;
+  }
+  return ok ? EXIT_SUCCESS : EXIT_FAILURE;
+}
+
+// A plane coloured by point scalars through a lookup table whose alpha makes it translucent
+// (the actor's opacity is 1).
+int ScalarColorsTransmittance()
+{
+  const dvec3 rgb(0.2, 0.8, 0.4);
+  const double alpha = 0.6;
+  SunOverFloor scene;
+  vtkActor* plane = scene.AddPlane(1.0, dvec3(1.0), 1.0);
+  vtkMapper* mapper = plane->GetMapper();
+  mapper->Update();
+  vtkNew<vtkPolyData> data;
+  data->DeepCopy(mapper->GetInputDataObject(0, 0));
+  mapper->SetInputDataObject(data);
+  vtkNew<vtkFloatArray> scalars;
+  scalars->SetNumberOfTuples(data->GetNumberOfPoints());
+  scalars->FillValue(0.5f);
+  data->GetPointData()->SetScalars(scalars);
+  vtkNew<vtkLookupTable> table;
+  table->SetNumberOfTableValues(1);
+  table->SetTableValue(0, rgb.x, rgb.y, rgb.z, alpha);
+  table->SetTableRange(0.0, 1.0);
+  table->Build();
+  mapper->SetLookupTable(table);
+  mapper->SetScalarVisibility(true);
+  mapper->SetScalarRange(0.0, 1.0);
+  std::array<double, 3> voxels{}, pixels{};
+  double lit = 0.0;
+  VOXELGI_CHECK(scene.Measure(voxels, pixels, lit) == EXIT_SUCCESS, "not measured");
+  return Transmits("lookup-table alpha " + std::to_string(alpha), rgb, alpha, voxels, pixels)
+    ? EXIT_SUCCESS
+    : EXIT_FAILURE;
+}
+
+// A translucent plane under the floor (the sun lights the floor before reaching it) takes no
+// light from the floor, and VTK still draws a translucent plane over it.
+int BehindTheReceiver()
+{
+  SunOverFloor alone;
+  std::array<double, 3> voxels{}, pixels{};
+  double lit = 0.0;
+  VOXELGI_CHECK(alone.Measure(voxels, pixels, lit) == EXIT_SUCCESS, "not measured");
+  SunOverFloor below;
+  below.AddPlane(-1.0, dvec3(0.2, 0.2, 0.9), 0.9);
+  below.AddPlane(-0.5, dvec3(0.9, 0.2, 0.2), 0.5);
+  double litBelow = 0.0;
+  VOXELGI_CHECK(below.Measure(voxels, pixels, litBelow) == EXIT_SUCCESS, "not measured");
+  std::cout << "lit floor " << lit << ", with translucent planes under it " << litBelow
+            << std::endl;
+  bool ok = Within("floor's change from translucent planes behind it",
+    std::abs(litBelow / lit - 1.0), 0.01, 0.01);
+  for (int c = 0; c < 3; ++c)
+  {
+    ok = Within("floor under the planes, channel " + std::to_string(c),
+           std::abs(pixels[c] - 1.0), 0.01, 0.01) && ok;
+  }
+  return ok ? EXIT_SUCCESS : EXIT_FAILURE;
+}
+}
+
+int TestGITranslucency(int argc, char* argv[])
+{
+  return voxelgi_test::RunCases({ { "PlaneTransmittance", PlaneTransmittance },
+                                  { "ScalarColorsTransmittance", ScalarColorsTransmittance },
+                                  { "BehindTheReceiver", BehindTheReceiver } },
+    argc, argv);
+}
