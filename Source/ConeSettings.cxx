@@ -41,20 +41,36 @@ void ConeSettings::Set(const Settings& settings, int resolution)
     settings.MaxTraceDistance * resolution);
 }
 
-void SetConeTracingSamplers(GLProgram& program, SamplerBindings& samplers,
-  const Volume3D& radiance, const VoxelMipmap& mips, float minLevel, float stepFactor)
+const char* const ConeTracingInputs::SamplerNames[7] = { "voxelRadiance", "voxelPosX",
+  "voxelNegX", "voxelPosY", "voxelNegY", "voxelPosZ", "voxelNegZ" };
+
+ConeTracingInputs BindConeTracing(SamplerBindings& samplers, const Volume3D& radiance,
+  const VoxelMipmap& mips, float minLevel, float stepFactor)
 {
-  static const char* const names[6] = { "voxelPosX", "voxelNegX", "voxelPosY", "voxelNegY",
-    "voxelPosZ", "voxelNegZ" };
-  program.SetInt("voxelRadiance", samplers.Add(radiance));
+  ConeTracingInputs inputs;
+  inputs.Units[0] = samplers.Add(radiance);
   for (int d = 0; d < 6; ++d)
   {
     // Isotropic mode has no directional volumes: point the samplers at the radiance volume.
-    program.SetInt(names[d], samplers.Add(mips.IsAnisotropic() ? mips.Directional[d] : radiance));
+    inputs.Units[1 + d] = samplers.Add(mips.IsAnisotropic() ? mips.Directional[d] : radiance);
   }
-  program.SetInt("voxelIsotropic", mips.IsAnisotropic() ? 0 : 1);
-  program.SetFloat("voxelMinLevel", minLevel);
-  program.SetFloat("coneStepFactor", stepFactor);
+  inputs.Isotropic = mips.IsAnisotropic() ? 0 : 1;
+  inputs.MinLevel = minLevel;
+  inputs.StepFactor = stepFactor;
+  return inputs;
+}
+
+void SetConeTracingSamplers(GLProgram& program, SamplerBindings& samplers,
+  const Volume3D& radiance, const VoxelMipmap& mips, float minLevel, float stepFactor)
+{
+  const ConeTracingInputs inputs = BindConeTracing(samplers, radiance, mips, minLevel, stepFactor);
+  for (int i = 0; i < 7; ++i)
+  {
+    program.SetInt(ConeTracingInputs::SamplerNames[i], inputs.Units[i]);
+  }
+  program.SetInt("voxelIsotropic", inputs.Isotropic);
+  program.SetFloat("voxelMinLevel", inputs.MinLevel);
+  program.SetFloat("coneStepFactor", inputs.StepFactor);
 }
 
 }

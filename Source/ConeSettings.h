@@ -31,6 +31,22 @@ struct ConeSettings
   void Set(const Settings& settings, int resolution);
 };
 
+/// The cone-tracing samplers (Shaders/cone_tracing.glsl) bound to texture units, and their
+/// uniforms, for a program of any kind.
+struct ConeTracingInputs
+{
+  static const char* const SamplerNames[7];
+  int Units[7] = { -1, -1, -1, -1, -1, -1, -1 };
+  int Isotropic = 1;
+  float MinLevel = 0.f;
+  float StepFactor = 1.f;
+};
+
+/// Bind the radiance volume and its mipmaps to units of `samplers`, reading mip levels from
+/// `minLevel` on.
+ConeTracingInputs BindConeTracing(SamplerBindings& samplers, const Volume3D& radiance,
+  const VoxelMipmap& mips, float minLevel, float stepFactor);
+
 /// Bind the cone-tracing samplers and uniforms (Shaders/cone_tracing.glsl) of `program`,
 /// reading mip levels from `minLevel` on.
 void SetConeTracingSamplers(GLProgram& program, SamplerBindings& samplers,

@@ -7,6 +7,7 @@
 #include "GBufferPass.h"
 #include "VoxelGIShaders.h"
 #include "StageIds.h"
+#include "TranslucentLighting.h"
 #include "VolumeLighting.h"
 #include "VoxelBounce.h"
 
@@ -190,7 +191,7 @@ int Present::RenderRemainingSteps(const Frame& frame)
   if (steps->GetTranslucentPass())
   {
     const int before = renderer->GetNumberOfPropsRendered();
-    renderer->DeviceRenderTranslucentPolygonalGeometry();
+    this->Translucent->Draw(frame, [renderer]() { renderer->DeviceRenderTranslucentPolygonalGeometry(); });
     rendered += renderer->GetNumberOfPropsRendered() - before;
   }
   // VTK applies FXAA here (before volumes and overlays) only when a renderer has no pass.
@@ -238,6 +239,7 @@ void Present::ReleaseGraphicsResources(vtkWindow* window)
     this->FXAA = nullptr;
   }
   this->Volumes->ReleaseGraphicsResources(window);
+  this->Translucent->ReleaseGraphicsResources(window);
 }
 
 }

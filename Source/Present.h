@@ -9,8 +9,8 @@
  * (FrameCopy) where the framebuffer allows. The one full-screen fragment pass of the pipeline: the
  * framebuffer may be VTK's, ParaView's or a Qt widget's. Then VTK's own remaining steps draw
  * as VTK would draw them, with the renderer's FXAA (vtkRenderer::UseFXAA) before volumes and
- * overlays, where VTK applies it; the volumes in the voxels add the indirect light that
- * reaches them (VolumeLighting).
+ * overlays, where VTK applies it; the volumes in the voxels and the translucent surfaces add
+ * the indirect light that reaches them (VolumeLighting, TranslucentLighting).
  */
 #ifndef VoxelGIPresent_h
 #define VoxelGIPresent_h
@@ -35,6 +35,7 @@ struct Frame;
 class Composite;
 class DebugView;
 class GBufferPass;
+class TranslucentLighting;
 class VolumeLighting;
 
 class Present
@@ -68,6 +69,7 @@ private:
   GBufferPass& GBuffer;
   const DebugView& Debug;
   vtkNew<VolumeLighting> Volumes; // VTK's volumes lit by GI
+  vtkNew<TranslucentLighting> Translucent; // VTK's translucent surfaces lit by GI
   std::unique_ptr<vtkOpenGLQuadHelper> Quad;
   FrameCopy Unchanged; // the last presented image, for frames that show it again
   vtkSmartPointer<vtkOpenGLFXAAFilter> FXAA;

@@ -1,6 +1,6 @@
 // Per-stage timing of vtkVoxelGIPass over scripted frame sequences (a benchmark, not a test).
 //
-//   VoxelGIBenchmark [--scene cornell|field|atrium|sphere|volume] [--objects N] [--triangles N]
+//   VoxelGIBenchmark [--scene cornell|field|atrium|sphere|volume|translucent] [--objects N] [--triangles N]
 //                    [--size WxH] [--resolution R] [--frames F] [--warmup W] [--trace-scale S]
 //                    [--multisamples N] [--egl] [--temporal-reuse 0|1] [--bounces N]
 //                    [--update-interval N] [--viewports N] [--shared-grid 0|1]
@@ -9,8 +9,9 @@
 //
 // Scenes: the Cornell box (36 triangles), a field of N spheres and boxes on a ground plane
 // (N + 1 actors), an atrium of Sponza scale (about 280k triangles: columns, arches,
-// galleries, drapes, coloured), one tessellated sphere of about N triangles, and a 256^3 volume
-// (VTK's wavelet, GPU ray cast) over a floor beside a sphere.
+// galleries, drapes, coloured), one tessellated sphere of about N triangles, a 256^3 volume
+// (VTK's wavelet, GPU ray cast) over a floor beside a sphere, and the study's translucent
+// surfaces (vtkVoxelGIScenes::AddTranslucentSurfaces: a glass canopy and a glass ball).
 // Sequences: static (nothing changes), orbit (camera only), headlight-orbit (the same orbit
 // with the scene's lights off and VTK's headlight on: the light turns with the camera), light
 // (one light moves), one-moving (one dynamic actor moves), all-moving (every actor moves),
@@ -392,7 +393,7 @@ bool Parse(int argc, char* argv[], Options& o)
   }
   return o.Width > 0 && o.Height > 0 && o.Frames > 0 && o.Viewports >= 1 && o.Viewports <= 16 &&
     (o.Scene == "cornell" || o.Scene == "field" || o.Scene == "atrium" || o.Scene == "sphere" ||
-      o.Scene == "volume");
+      o.Scene == "volume" || o.Scene == "translucent");
 }
 }
 
@@ -401,7 +402,7 @@ int main(int argc, char* argv[])
   Options o;
   if (!Parse(argc, argv, o))
   {
-    std::cerr << "usage: VoxelGIBenchmark [--scene cornell|field|atrium|sphere|volume] [--objects N] "
+    std::cerr << "usage: VoxelGIBenchmark [--scene cornell|field|atrium|sphere|volume|translucent] [--objects N] "
                  "[--triangles N] [--size WxH] [--resolution R] [--frames F] [--warmup W] "
                  "[--trace-scale S] [--multisamples N] [--egl] [--temporal-reuse 0|1] "
                  "[--bounces N] [--update-interval N] [--viewports N] [--shared-grid 0|1] "
@@ -426,6 +427,10 @@ int main(int argc, char* argv[])
   else if (o.Scene == "volume")
   {
     AddVolume(renderer);
+  }
+  else if (o.Scene == "translucent")
+  {
+    vtkVoxelGIScenes::AddTranslucentSurfaces(renderer);
   }
   else
   {

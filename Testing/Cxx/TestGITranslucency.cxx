@@ -1,7 +1,8 @@
 // Translucent surfaces in GI (ShadowTransmittance): a plane of opacity a and colour c between
 // a sun and a floor passes (1 - a) c of the light, in the voxels' light and in the pixels'
 // shadows, whether the actor's property or its scalars through a lookup table colour it; a
-// translucent surface behind the receiver takes nothing away; VTK still draws it.
+// translucent surface behind the receiver takes nothing away; VTK still draws it, with the
+// indirect light it receives (TranslucentLighting).
 #include "VoxelGITestUtilities.h"
 #include "vtkVoxelGIPass.h"
 
@@ -199,12 +200,65 @@ int BehindTheReceiver()
   }
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }
+
+// A translucent plane (colour c, opacity a) inside a closed box whose black walls emit
+// radiance E: light E arrives from every side, so GI adds E c to VTK's colour of the plane,
+// which VTK blends over the wall behind it with weight a: the plane's pixels gain a c E.
+int LitByEmittingRoom()
+{
+  const double E = 0.5, alpha = 0.5;
+  const dvec3 rgb(0.6, 0.5, 0.4);
+  voxelgi_test::GIWindow view(nullptr, 64, 100, 0);
+  // A light of no intensity: VTK shades the plane (its normal and position exist in its
+  // shader), adding nothing.
+  vtkNew<vtkLight> dark;
+  dark->SetLightTypeToSceneLight();
+  dark->SetIntensity(0.0);
+  view.Renderer->AddLight(dark);
+  for (vtkActor* wall : voxelgi_test::AddClosedBox(view.Renderer, 4.0, 0.0))
+  {
+    wall->GetProperty()->SetAmbient(1.0);
+    wall->GetProperty()->SetAmbientColor(E, E, E);
+    wall->GetProperty()->SetDiffuse(0.0);
+    vtkVoxelGIPass::SetPropEmission(wall, E, E, E);
+  }
+  vtkActor* plane = voxelgi_test::AddQuad(view.Renderer, dvec3(1.0, 1.0, 2.0),
+    dvec3(3.0, 1.0, 2.0), dvec3(1.0, 3.0, 2.0), rgb.x, rgb.y, rgb.z);
+  plane->GetProperty()->SetOpacity(alpha);
+  vtkCamera* camera = view.Renderer->GetActiveCamera();
+  camera->SetPosition(2.0, 2.0, 3.9);
+  camera->SetFocalPoint(2.0, 2.0, 2.0);
+  camera->SetViewUp(0.0, 1.0, 0.0);
+  camera->SetViewAngle(40.0);
+  view.Renderer->ResetCameraClippingRange();
+  auto centre = [&view](bool gi, int c) {
+    gi ? view.Window->Render() : view.RenderWithoutGI();
+    vtkNew<vtkFloatArray> pixels;
+    view.Window->GetRGBAPixelData(0, 0, 99, 99, 0, pixels);
+    return voxelgi_test::MeanOver(pixels, 100, 40, 40, 60, 60, c);
+  };
+  bool ok = true;
+  for (int c = 0; c < 3; ++c)
+  {
+    const double lit = centre(true, c);
+    VOXELGI_CHECK(view.GI->GetGIActive() && voxelgi_test::AllFinite(view.GI), "GI did not run");
+    const double plain = centre(false, c);
+    const double expected = alpha * rgb[c] * E;
+    std::cout << "channel " << c << ": plain " << plain << ", with GI " << lit << ", added "
+              << lit - plain << " (a c E " << expected << ")" << std::endl;
+    ok = Within("translucent plane lit by the room, channel " + std::to_string(c) +
+             ", error of what GI adds",
+           std::abs((lit - plain) / expected - 1.0), 0.1, 0.1) && ok;
+  }
+  return ok ? EXIT_SUCCESS : EXIT_FAILURE;
+}
 }
 
 int TestGITranslucency(int argc, char* argv[])
 {
   return voxelgi_test::RunCases({ { "PlaneTransmittance", PlaneTransmittance },
                                   { "ScalarColorsTransmittance", ScalarColorsTransmittance },
-                                  { "BehindTheReceiver", BehindTheReceiver } },
+                                  { "BehindTheReceiver", BehindTheReceiver },
+                                  { "LitByEmittingRoom", LitByEmittingRoom } },
     argc, argv);
 }
