@@ -6,6 +6,7 @@
 #include "vtkArrayDispatch.h"
 #include "vtkCellArray.h"
 #include "vtkDataArrayRange.h"
+#include "vtkFollower.h"
 #include "vtkMapper.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -195,10 +196,16 @@ std::string ComputeUnreadable(vtkActor* actor)
 {
   vtkMapper* mapper = actor->GetMapper();
   // The exact classes: a subclass (a user's own mapper, glyphs, composite data) or an actor
-  // that draws through an internal one (followers, LOD actors) draws something else.
-  if (std::strcmp(actor->GetClassName(), "vtkOpenGLActor") != 0)
+  // that draws through an internal one (LOD actors, followers turning with a camera) draws
+  // something else. A follower without a camera (every vedo mesh) draws as an actor.
+  auto* follower = vtkFollower::SafeDownCast(actor);
+  const bool plainFollower = follower && !follower->GetCamera() &&
+    (std::strcmp(actor->GetClassName(), "vtkFollower") == 0 ||
+      std::strcmp(actor->GetClassName(), "vtkOpenGLFollower") == 0);
+  if (std::strcmp(actor->GetClassName(), "vtkOpenGLActor") != 0 && !plainFollower)
   {
-    return std::string("actor class ") + actor->GetClassName();
+    return std::string("actor class ") + actor->GetClassName() +
+      (follower ? " (turning with a camera)" : "");
   }
   if (!mapper || std::strcmp(mapper->GetClassName(), "vtkOpenGLPolyDataMapper") != 0)
   {

@@ -2,7 +2,7 @@
  * TranslucentLighting: VTK's translucent surfaces receive GI. While VTK's translucent step
  * draws, this internal render pass is on the keys of the translucent actors the scan recorded
  * (ActorRecord::Translucent) and adds to each fragment's colour its diffuse colour times the
- * indirect light arriving there, traced by a few cones through the voxels
+ * indirect light arriving there, traced by two cones through the voxels
  * (translucent_lighting.glsl); VTK's own colour, blending and order-independent translucency
  * or depth peeling stay as they are.
  */

@@ -10,7 +10,8 @@
 // triangle-strip sphere coloured per point), offset (the scene 1e7 units from the origin:
 // positions shifted into floats), dynamic (a dynamic block moved after the first frame: the
 // static voxels kept, the block's written again), changing (a sphere whose tessellation, and
-// so its number of triangles, changes at every frame, as time-varying data does). Both paths
+// so its number of triangles, changes at every frame, as time-varying data does), follower (a
+// scalar-coloured vtkFollower without a camera, as vedo's meshes are). Both paths
 // run in one process; the compute run must hold triangle buffers (RESOURCE_SCENE_BUFFERS) and
 // the raster run none. The lit voxels must agree too: the compute run draws the scene lights'
 // shadow maps from the same resident triangles (ShadowDepth), the raster run through copies
@@ -23,6 +24,7 @@
 #include "vtkCubeSource.h"
 #include "vtkDataArray.h"
 #include "vtkElevationFilter.h"
+#include "vtkFollower.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -143,6 +145,18 @@ bool Build(const std::string& which, vtkRenderer* renderer, std::function<void(i
     vtkActor* moving = vtkVoxelGIScenes::AddSource(renderer, cube, 0.9, 0.8, 0.1);
     vtkVoxelGIPass::SetPropDynamic(moving, true);
     step = [moving](int) { moving->AddPosition(0.35, 0.0, 0.45); };
+    return true;
+  }
+  if (which == "follower")
+  {
+    // A follower without a camera (every vedo mesh), placed by its position.
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputConnection(elevation->GetOutputPort());
+    mapper->SetScalarRange(0.0, 1.0);
+    vtkNew<vtkFollower> follower;
+    follower->SetMapper(mapper);
+    follower->SetPosition(0.3, 0.1, -0.4);
+    renderer->AddActor(follower);
     return true;
   }
   if (which == "changing")

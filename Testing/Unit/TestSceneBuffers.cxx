@@ -8,6 +8,7 @@
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkFieldData.h"
+#include "vtkCamera.h"
 #include "vtkFollower.h"
 #include "vtkNew.h"
 #include "vtkOpenGLActor.h"
@@ -168,7 +169,12 @@ TEST(SceneBuffers, WhatKeepsTheRasterPath)
   m.Actor->SetBackfaceProperty(back);
   EXPECT_EQ(voxelgi::ComputeUnreadable(m.Actor), "a backface property");
 
+  m.Actor->SetBackfaceProperty(nullptr);
+  // A follower draws as an actor until it has a camera to turn with.
   vtkNew<vtkFollower> follower;
   follower->SetMapper(m.Mapper);
-  EXPECT_NE(voxelgi::ComputeUnreadable(follower), "");
+  EXPECT_EQ(voxelgi::ComputeUnreadable(follower), "");
+  vtkNew<vtkCamera> camera;
+  follower->SetCamera(camera);
+  EXPECT_EQ(voxelgi::ComputeUnreadable(follower), "actor class vtkFollower (turning with a camera)");
 }
