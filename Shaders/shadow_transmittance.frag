@@ -1,6 +1,8 @@
 // A translucent surface of colour c and opacity a passes (1 - a) of the light that reaches
-// it, filtered by its colour: (1 - a) c (the reference renders it as a transparent BSDF of
-// colour c and weight 1 - a over a diffuse one of weight a). The layer's blending multiplies
+// it, tinted by its colour as much as it is opaque: (1 - a) mix(1, c, a). So a surface a
+// lookup table hides (alpha 0) passes all of it, as VTK shows what lies behind it untinted,
+// and an opaque one none (the reference renders it as a transparent BSDF of that colour and
+// weight 1 - a over a diffuse one of weight a). The layer's blending multiplies
 // the rgb of every translucent surface in front of the nearest opaque one (depth-tested
 // against the layer's depth, not written), and keeps in alpha the largest 1 - depth: the
 // nearest translucent surface, with half-float precision where perspective depth crowds
@@ -20,5 +22,6 @@ void main()
   vec4 c = transmitColorMode == 1
     ? transmitVertexColor
     : (transmitColorMode == 2 ? unpackUnorm4x8(transmitCellColors[gl_PrimitiveID]) : transmitColor);
-  transmitOut = vec4(clamp((1.0 - c.a) * c.rgb, 0.0, 1.0), 1.0 - gl_FragCoord.z);
+  float a = clamp(c.a, 0.0, 1.0);
+  transmitOut = vec4((1.0 - a) * mix(vec3(1.0), clamp(c.rgb, 0.0, 1.0), a), 1.0 - gl_FragCoord.z);
 }

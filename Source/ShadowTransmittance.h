@@ -1,8 +1,9 @@
 /**
  * ShadowTransmittance stage (shadow_transmittance.vert/.frag): beside each shadow map layer,
- * the light that translucent actors let through, filtered by their colour (rgb), and the
- * nearest of them (alpha: one minus its depth), drawn from their GPU-resident triangles
- * (SceneBuffers) after the layer's opaque depth, which hides those behind it. Allocated only
+ * the light that translucent actors let through, tinted by their colour as much as they are
+ * opaque (rgb), and the nearest of them (alpha: one minus its depth), drawn from their
+ * GPU-resident triangles (SceneBuffers) after the layer's opaque depth, which hides those
+ * behind it. Allocated only
  * while a translucent actor casts shadows; the maps' readers (shadow_maps.glsl) multiply a
  * point's visibility by it where the point lies behind that nearest translucent surface.
  */

@@ -295,10 +295,14 @@ Json::Value Material(vtkActor* actor, bool colored, const std::string& normals)
   }
   if (p->GetOpacity() < 1.0)
   {
-    // Of the light that reaches it, (1 - opacity) passes, filtered by its colour (as the
-    // pass's shadows filter it); the camera sees through it unfiltered, as VTK blends it.
-    m["opacity"] = p->GetOpacity();
-    m["transmit"] = ToJson(p->GetDiffuseColor());
+    // Of the light that reaches it, (1 - opacity) passes, tinted by its colour as much as it
+    // is opaque (as the pass's shadows let it through); the camera sees through it untinted,
+    // as VTK blends it.
+    const double a = p->GetOpacity();
+    const double* c = p->GetDiffuseColor();
+    const double tint[3] = { 1.0 - a + a * c[0], 1.0 - a + a * c[1], 1.0 - a + a * c[2] };
+    m["opacity"] = a;
+    m["transmit"] = ToJson(tint);
   }
   m["normals"] = normals;
   Json::Value vtk;

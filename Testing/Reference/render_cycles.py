@@ -90,8 +90,9 @@ for obj in bpy.context.scene.objects:
                 links.new(glossy.outputs[0], both.inputs[1])
                 shader = both
             if desc_material.get("opacity", 1.0) < 1.0:
-                # (1 - opacity) of the light passes, filtered by the surface's colour; camera
-                # rays see through unfiltered (VTK blends what lies behind untinted).
+                # (1 - opacity) of the light passes, tinted by "transmit" (the surface's colour
+                # as much as it is opaque); camera rays see through untinted (VTK blends what
+                # lies behind untinted).
                 transparent = nodes.new("ShaderNodeBsdfTransparent")
                 path = nodes.new("ShaderNodeLightPath")
                 tint = nodes.new("ShaderNodeMixRGB")
