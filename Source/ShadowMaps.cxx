@@ -224,16 +224,15 @@ bool ShadowMaps::Prepare(const Frame& frame, std::string& error, std::string& no
   return true;
 }
 
-bool ShadowMaps::PrepareTransmittance(const Frame& frame, std::string& note)
+void ShadowMaps::PrepareTransmittance(const Frame& frame, std::string& note)
 {
   const bool translucent = this->HasMaps() &&
     std::any_of(frame.Actors->begin(), frame.Actors->end(),
       [](const ActorRecord& record) { return record.Translucent; });
   const std::size_t before = this->Transmittance.Bytes();
   std::string error;
-  bool ok = this->Transmittance.Prepare(
-    translucent ? this->Maps.Size() : 0, translucent ? this->Maps.Layers() : 0, error);
-  if (!ok)
+  if (!this->Transmittance.Prepare(
+        translucent ? this->Maps.Size() : 0, translucent ? this->Maps.Layers() : 0, error))
   {
     note = error + ": translucent actors cast no shadow.";
     this->Transmittance.Prepare(0, 0, error);
@@ -243,7 +242,6 @@ bool ShadowMaps::PrepareTransmittance(const Frame& frame, std::string& note)
     this->Drawn.assign(this->Drawn.size(), LayerKey{}); // no layer holds its transmittance
   }
   this->Data.shadowInfo[1] = this->Transmittance.IsAllocated() ? 1 : 0;
-  return ok;
 }
 
 bool ShadowMaps::Allot(int size, int layers, std::string& note)

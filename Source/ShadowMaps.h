@@ -130,9 +130,9 @@ private:
   /// The frame's voxelized actors as casters (this->Casters).
   void ReadCasters(const Frame& frame);
   /// Allocate the transmittance layers while any actor of the frame is translucent (else
-  /// free them); layers drawn without them are drawn again. False (with `note`) when they
-  /// do not fit: translucent actors then cast no shadow.
-  bool PrepareTransmittance(const Frame& frame, std::string& note);
+  /// free them); layers drawn without them are drawn again. Where they do not fit, `note`
+  /// says so and translucent actors cast no shadow.
+  void PrepareTransmittance(const Frame& frame, std::string& note);
   /// Draw the casters of `key` into the bound layer: opaque depth, then transmittance.
   void DrawCasters(const Frame& frame, int layer, const LayerKey& key, vtkRenderer* renderer);
   /// Draw `layer` from `clipFromWorld` unless it holds that view of the same casters; the

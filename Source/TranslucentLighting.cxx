@@ -17,7 +17,6 @@
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 
-#include <algorithm>
 #include <vector>
 
 namespace voxelgi

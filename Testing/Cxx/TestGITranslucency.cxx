@@ -80,29 +80,12 @@ struct SunOverFloor
     lit = voxelgi_test::MeanOver(composite, 100, 8, 8, 16, 16, 1);
     for (int c = 0; c < 3; ++c)
     {
-      voxels[c] = FloorRadiance(radiance, 2.0, 2.0, c) / FloorRadiance(radiance, 0.4, 0.4, c);
+      voxels[c] = voxelgi_test::FloorRadiance(radiance, 2.0, 2.0, c) /
+        voxelgi_test::FloorRadiance(radiance, 0.4, 0.4, c);
       pixels[c] = voxelgi_test::MeanOver(composite, 100, 45, 45, 55, 55, c) /
         voxelgi_test::MeanOver(composite, 100, 8, 8, 16, 16, c);
     }
     return EXIT_SUCCESS;
-  }
-  /// The radiance of the floor's voxels (channel c, summed over the voxel layers at y = 0)
-  /// under the world point (x, 0, z).
-  static double FloorRadiance(vtkImageData* radiance, double x, double z, int c)
-  {
-    const double* origin = radiance->GetOrigin(); // the first voxel's centre
-    const double h = radiance->GetSpacing()[0];
-    const int* dims = radiance->GetDimensions();
-    const int i = static_cast<int>(std::lround((x - origin[0]) / h));
-    const int k = static_cast<int>(std::lround((z - origin[2]) / h));
-    const int j0 = static_cast<int>(std::lround((0.0 - origin[1]) / h));
-    double sum = 0.0;
-    for (int j = std::max(j0 - 2, 0); j <= std::min(j0 + 2, dims[1] - 1); ++j)
-    {
-      int ijk[3] = { i, j, k };
-      sum += radiance->GetPointData()->GetScalars()->GetComponent(radiance->ComputePointId(ijk), c);
-    }
-    return sum;
   }
 };
 
@@ -220,13 +203,7 @@ int LitByEmittingRoom()
   dark->SetLightTypeToSceneLight();
   dark->SetIntensity(0.0);
   view.Renderer->AddLight(dark);
-  for (vtkActor* wall : voxelgi_test::AddClosedBox(view.Renderer, 4.0, 0.0))
-  {
-    wall->GetProperty()->SetAmbient(1.0);
-    wall->GetProperty()->SetAmbientColor(E, E, E);
-    wall->GetProperty()->SetDiffuse(0.0);
-    vtkVoxelGIPass::SetPropEmission(wall, E, E, E);
-  }
+  voxelgi_test::AddEmittingBox(view.Renderer, 4.0, E);
   vtkActor* plane = voxelgi_test::AddQuad(view.Renderer, dvec3(1.0, 1.0, 2.0),
     dvec3(3.0, 1.0, 2.0), dvec3(1.0, 3.0, 2.0), rgb.x, rgb.y, rgb.z);
   plane->GetProperty()->SetOpacity(alpha);

@@ -71,26 +71,6 @@ void AddSun(vtkRenderer* renderer)
   renderer->AddLight(sun);
 }
 
-/// The radiance of the floor's voxels (summed over the voxel layers at y = 0) under the
-/// world point (x, 0, z).
-double FloorRadiance(vtkImageData* radiance, double x, double z)
-{
-  const double* origin = radiance->GetOrigin(); // the first voxel's centre
-  const double h = radiance->GetSpacing()[0];
-  const int* dims = radiance->GetDimensions();
-  const int i = static_cast<int>(std::lround((x - origin[0]) / h));
-  const int k = static_cast<int>(std::lround((z - origin[2]) / h));
-  const int j0 = static_cast<int>(std::lround((0.0 - origin[1]) / h));
-  double sum = 0.0;
-  for (int j = std::max(j0 - 2, 0); j <= std::min(j0 + 2, dims[1] - 1); ++j)
-  {
-    const int ijk[3] = { i, j, k };
-    sum += radiance->GetPointData()->GetScalars()->GetComponent(radiance->ComputePointId(
-             const_cast<int*>(ijk)), 0);
-  }
-  return sum;
-}
-
 //------------------------------------------------------------------------------
 // A black slab (it absorbs, scatters nothing) 0.5 thick over a white floor under a sun: the
 // floor below keeps (1 - alpha)^(0.5 / unit) of the sun's light (Beer-Lambert), in the voxels
@@ -123,8 +103,8 @@ int SlabTransmittance()
 
     vtkNew<vtkImageData> radiance;
     VOXELGI_CHECK(view.GI->GetVoxelVolume(vtkVoxelGIPass::VOLUME_RADIANCE, radiance), "no voxels");
-    const double lit = FloorRadiance(radiance, 0.4, 0.4);
-    const double under = FloorRadiance(radiance, 2.0, 2.0);
+    const double lit = voxelgi_test::FloorRadiance(radiance, 0.4, 0.4);
+    const double under = voxelgi_test::FloorRadiance(radiance, 2.0, 2.0);
     VOXELGI_CHECK(lit > 0.0, "the floor's voxels are dark");
     const double voxelRatio = under / lit;
 
@@ -156,13 +136,7 @@ int VolumeLitByEmittingRoom()
   const double E = 0.5;
   voxelgi_test::GIWindow view(nullptr, 64, 100, 0);
   view.Renderer->AutomaticLightCreationOff();
-  for (vtkActor* wall : voxelgi_test::AddClosedBox(view.Renderer, 4.0, 0.0))
-  {
-    wall->GetProperty()->SetAmbient(1.0);
-    wall->GetProperty()->SetAmbientColor(E, E, E);
-    wall->GetProperty()->SetDiffuse(0.0);
-    vtkVoxelGIPass::SetPropEmission(wall, E, E, E);
-  }
+  voxelgi_test::AddEmittingBox(view.Renderer, 4.0, E);
   vtkSmartPointer<vtkVolume> volume =
     MakeSlab(dvec3(1.5), dvec3(2.5), 0.05, 0.2, 1.0, dvec3(0.6, 0.5, 0.4));
   view.Renderer->AddVolume(volume);

@@ -308,6 +308,34 @@ std::vector<vtkActor*> AddClosedBox(vtkRenderer* renderer, double size, double r
   return walls;
 }
 
+void AddEmittingBox(vtkRenderer* renderer, double size, double E)
+{
+  for (vtkActor* wall : AddClosedBox(renderer, size, 0.0))
+  {
+    wall->GetProperty()->SetAmbient(1.0);
+    wall->GetProperty()->SetAmbientColor(E, E, E);
+    wall->GetProperty()->SetDiffuse(0.0);
+    vtkVoxelGIPass::SetPropEmission(wall, E, E, E);
+  }
+}
+
+double FloorRadiance(vtkImageData* radiance, double x, double z, int c)
+{
+  const double* origin = radiance->GetOrigin(); // the first voxel's centre
+  const double h = radiance->GetSpacing()[0];
+  const int* dims = radiance->GetDimensions();
+  const int i = static_cast<int>(std::lround((x - origin[0]) / h));
+  const int k = static_cast<int>(std::lround((z - origin[2]) / h));
+  const int j0 = static_cast<int>(std::lround((0.0 - origin[1]) / h));
+  double sum = 0.0;
+  for (int j = std::max(j0 - 2, 0); j <= std::min(j0 + 2, dims[1] - 1); ++j)
+  {
+    int ijk[3] = { i, j, k };
+    sum += radiance->GetPointData()->GetScalars()->GetComponent(radiance->ComputePointId(ijk), c);
+  }
+  return sum;
+}
+
 vtkSmartPointer<vtkFloatArray> Composite(vtkVoxelGIPass* gi)
 {
   auto image = vtkSmartPointer<vtkFloatArray>::New();

@@ -118,6 +118,14 @@ vtkActor* AddQuad(vtkRenderer* renderer, const glm::dvec3& o, const glm::dvec3& 
 /// Add the six inward-facing walls of the box [0, size]^3, grey of albedo `rho`.
 std::vector<vtkActor*> AddClosedBox(vtkRenderer* renderer, double size, double rho);
 
+/// Add a closed box [0, size]^3 of black walls that emit radiance `E` (VTK shows them in
+/// their ambient colour E).
+void AddEmittingBox(vtkRenderer* renderer, double size, double E);
+
+/// The radiance of the floor's voxels (channel `c`, summed over the voxel layers at y = 0)
+/// under the world point (x, 0, z) of a radiance volume read back from the pass.
+double FloorRadiance(vtkImageData* radiance, double x, double z, int c = 0);
+
 /// Prints a failure and returns false when the condition does not hold.
 #define VOXELGI_CHECK(condition, message)                                                    \
   do                                                                                         \
