@@ -29,6 +29,11 @@
    ones, and the clear and the bounce run on those alone (an indirect dispatch). */
 #define VOXELGI_BRICK_LIST_BINDING 11
 
+/* Shader storage binding of the bounces' sums (voxel_bounce.comp): per bounce and colour
+   channel the whole grid's increment of radiance, then the ratio the last tail used. */
+#define VOXELGI_BOUNCE_SUMS_BINDING 16
+#define VOXELGI_MAX_BOUNCES 10
+
 /* Shader storage bindings of compute voxelization (voxelize.comp): an actor's vertices,
    triangles' vertex indices and cell colours (SceneBuffers), and the list of its triangles
    that cover many pixel columns. */

@@ -14,7 +14,8 @@ namespace
 std::vector<double> RadianceKey(const Settings& c, const VoxelGrid& grid)
 {
   return { static_cast<double>(c.LightOcclusion), static_cast<double>(c.ShadowMapResolution),
-    static_cast<double>(c.Bounces), static_cast<double>(c.AnisotropicMipmaps),
+    static_cast<double>(c.Bounces), static_cast<double>(c.BounceTail),
+    static_cast<double>(c.AnisotropicMipmaps),
     static_cast<double>(c.DiffuseConeCount), c.DiffuseConeAperture, c.ConeStepFactor,
     c.MaxTraceDistance * grid.Resolution, grid.Origin.x, grid.Origin.y, grid.Origin.z,
     grid.VoxelSize };

@@ -30,6 +30,12 @@ bool VoxelBounce::Prepare(const Frame& frame, std::string& error)
     }
     this->Incident.Clear(); // bricks the bounce never visits stay dark
   }
+  if (!this->Sums.IsAllocated() &&
+    !this->Sums.Allocate(sizeof(unsigned int) * (6 * VOXELGI_MAX_BOUNCES + 3)))
+  {
+    error = "could not allocate the bounces' sums";
+    return false;
+  }
   return this->Program.BuildOnce(shaders::voxel_bounce_comp, "voxel bounce", error,
     volumes ? "#define VOXELGI_VOLUMES\n" : "");
 }
@@ -38,14 +44,22 @@ void VoxelBounce::Run(const Frame& frame)
 {
   // Bounce and mipmap timings would nest: time them together.
   ScopedStage stage(*frame.Clock, stage::Bounce);
-  for (int bounce = 0; bounce < frame.Plan.Bounces; ++bounce)
+  if (frame.Config.BounceTail)
   {
-    this->Bounce(frame);
+    // A relight from the direct light starts the sums and the ratio anew; one that continues
+    // the last solution (a bounce) keeps the ratio that solution measured.
+    const unsigned int zeros[6 * VOXELGI_MAX_BOUNCES + 3] = {};
+    const bool anew = frame.Plan.Lights == LightWork::Relight;
+    this->Sums.Upload(zeros, sizeof(zeros) - (anew ? 0 : 3 * sizeof(unsigned int)));
+  }
+  for (int bounce = 1; bounce <= frame.Plan.Bounces; ++bounce)
+  {
+    this->Bounce(frame, bounce, bounce == frame.Plan.Bounces);
     this->Mipmap.Build(frame.Window);
   }
 }
 
-void VoxelBounce::Bounce(const Frame& frame)
+void VoxelBounce::Bounce(const Frame& frame, int index, bool last)
 {
   SamplerBindings samplers(frame.Window);
   GLProgram& p = this->Program;
@@ -64,20 +78,29 @@ void VoxelBounce::Bounce(const Frame& frame)
   p.SetInt("coneCount", this->Cones.Count);
   p.SetFloat("coneTanHalf", this->Cones.TanHalf);
   p.SetFloat("maxDistance", this->Cones.MaxDistance);
-  radiance.BindImage(0, GL_WRITE_ONLY);
+  p.SetInt("bounceIndex", index);
+  // Only a relight from the direct light measures the ratio, from its bounces before the last.
+  const bool measures = frame.Config.BounceTail && frame.Plan.Lights == LightWork::Relight &&
+    frame.Plan.Bounces >= 3 && !last;
+  p.SetInt("bounceSums", measures ? 1 : 0);
+  p.SetInt("bounceTail", frame.Config.BounceTail && last ? 1 : 0);
+  this->Sums.Bind(VOXELGI_BOUNCE_SUMS_BINDING);
+  radiance.BindImage(0, GL_READ_WRITE);
   if (this->Incident.IsAllocated())
   {
     this->Incident.BindImage(1, GL_WRITE_ONLY);
   }
   this->Voxels.GetBrickList().Bind(VOXELGI_BRICK_LIST_BINDING);
   p.DispatchIndirect(this->Voxels.GetBrickList());
-  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
+    GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
 void VoxelBounce::ReleaseGraphicsResources(vtkWindow*)
 {
   this->Program.Release();
   this->Incident.Release();
+  this->Sums.Release();
 }
 
 }

@@ -2,7 +2,8 @@
  * Bounce stage (voxel_bounce.comp): each bounce cone-traces every occupied voxel through the
  * mipmaps of the current radiance and sets radiance = direct + albedo x gathered, then the
  * mipmaps are rebuilt. Cone weights sum to one and albedo is below one, so repeated bounces
- * converge from below (energy bounded).
+ * converge from below (energy bounded). With BounceTail the bounces sum the grid's increments
+ * and the last adds the series' rest, extrapolated from the ratio of the last two.
  */
 #ifndef VoxelGIVoxelBounce_h
 #define VoxelGIVoxelBounce_h
@@ -43,7 +44,8 @@ public:
   void ReleaseGraphicsResources(vtkWindow* window);
 
 private:
-  void Bounce(const Frame& frame);
+  /// Bounce `index` (1, 2, ...) of the relight; `last`: add the tail.
+  void Bounce(const Frame& frame, int index, bool last);
 
   const VoxelizePass& Voxels;
   LightVoxels& Lighting;
@@ -51,6 +53,7 @@ private:
   ConeSettings Cones;
   GLProgram Program;
   Volume3D Incident;
+  StorageBuffer Sums; // the increments per bounce and channel, and the last ratio (BounceTail)
 };
 
 }

@@ -180,7 +180,8 @@ int main(int argc, char* argv[])
   const std::vector<std::pair<std::string, std::vector<double>>> sweep = {
     { "VoxelResolution", { 32, 64, 256 } }, { "DiffuseConeCount", { 1, 3, 6, 9 } },
     { "DiffuseConeAperture", { 30, 45, 90 } }, { "ConeStepFactor", { 0.35, 0.5, 1.0, 1.5 } },
-    { "Bounces", { 0, 1, 2, 6 } }, { "TraceResolution", { 0.5, 0.25 } }, { "TemporalReuse", { 0 } },
+    { "Bounces", { 0, 1, 2, 4, 6 } }, { "BounceTail", { 0 } }, { "TraceResolution", { 0.5, 0.25 } },
+    { "TemporalReuse", { 0 } },
     { "AnisotropicMipmaps", { 0 } }, { "AmbientOcclusionStrength", { 0, 0.5 } },
     { "SpecularCone", { 0 } }, { "LightOcclusion", { 0, 1 } },
     { "ShadowMapResolution", { 512, 2048 } } };

@@ -93,8 +93,8 @@ private Q_SLOTS:
     vtkNew<vtkVoxelGIPass> pass;
     vtkVoxelGISettingsWidget panel;
     panel.setPass(pass);
-    qobject_cast<QSpinBox*>(panel.control("Bounces"))->setValue(3);
-    QCOMPARE(pass->GetBounces(), 3);
+    qobject_cast<QSpinBox*>(panel.control("Bounces"))->setValue(5);
+    QCOMPARE(pass->GetBounces(), 5);
     qobject_cast<QCheckBox*>(panel.control("ConeShadows"))->setChecked(false);
     QCOMPARE(pass->GetConeShadows(), 0);
     qobject_cast<QComboBox*>(panel.control("DebugView"))->setCurrentIndex(vtkVoxelGIPass::DEBUG_VIEW_INDIRECT);
@@ -187,7 +187,7 @@ private Q_SLOTS:
       QCOMPARE(vtkVoxelGISettings::GetValue(pass, vtkVoxelGISettings::GetName(i)),
         vtkVoxelGISettings::GetDefault(i));
     }
-    QCOMPARE(qobject_cast<QSpinBox*>(panel.control("Bounces"))->value(), 4);
+    QCOMPARE(qobject_cast<QSpinBox*>(panel.control("Bounces"))->value(), 3);
   }
 
   void viewerRenderAreaMatchesBaseline()

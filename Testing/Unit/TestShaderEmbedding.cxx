@@ -127,10 +127,10 @@ TEST(ShaderEmbedding, LineDirectivesResumeAfterAnInclude)
   const std::string bounce = voxelgi::shaders::voxel_bounce_comp;
   const int file = FileNumber("voxel_bounce.comp");
   ASSERT_GE(file, 0);
-  // voxel_bounce.comp includes lights.glsl on its line 7 and cone_tracing.glsl on line 8.
+  // voxel_bounce.comp includes lights.glsl on its line 11 and cone_tracing.glsl on line 12.
   EXPECT_NE(bounce.find("#line 1 " + std::to_string(file) + "\n"), std::string::npos);
-  EXPECT_NE(bounce.find("#line 8 " + std::to_string(file) + "\n"), std::string::npos);
-  EXPECT_NE(bounce.find("#line 9 " + std::to_string(file) + "\n"), std::string::npos);
+  EXPECT_NE(bounce.find("#line 12 " + std::to_string(file) + "\n"), std::string::npos);
+  EXPECT_NE(bounce.find("#line 13 " + std::to_string(file) + "\n"), std::string::npos);
 }
 
 TEST(ShaderEmbedding, CompilerLogsNameTheFiles)

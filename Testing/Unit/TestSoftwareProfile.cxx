@@ -38,7 +38,7 @@ TEST(SoftwareProfile, CapsTheDefaultsAndKeepsLowerValues)
   EXPECT_EQ(defaults.DiffuseConeCount, 4);
   EXPECT_EQ(defaults.TraceResolution, 0.25);
   EXPECT_EQ(defaults.ShadowMapResolution, 256);
-  EXPECT_EQ(defaults.Bounces, 4); // bounces are kept
+  EXPECT_EQ(defaults.Bounces, 3); // bounces are kept
 
   Settings small;
   small.VoxelResolution = 32;
