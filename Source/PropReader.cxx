@@ -113,6 +113,19 @@ std::string LeftOutReason(vtkProp* prop)
     return std::string(prop->GetClassName()) + " (not an actor)";
   }
   vtkMapper* mapper = actor->GetMapper();
+  // Splats of a shape and molecules are voxelized as their spheres and sticks (ImposterProxies).
+  if (ImposterProxies::Splats(actor) || ImposterProxies::Molecule(actor))
+  {
+    return actor->HasOpaqueGeometry()
+      ? std::string()
+      : std::string(prop->GetClassName()) + " (translucent, " +
+        (ImposterProxies::Molecule(actor) ? "a molecule" : "splats") + ")";
+  }
+  if (mapper && mapper->IsA("vtkPointGaussianMapper"))
+  {
+    return std::string(prop->GetClassName()) + " with a " + mapper->GetClassName() +
+      " (Gaussian splats without a splat shape, or of scale 0: no surface)";
+  }
   // Glyph mappers draw every instance through a polydata helper, dataset mappers (any
   // dataset: unstructured grids, image data) their surface through one: voxelized like polygons.
   if (!vtkOpenGLPolyDataMapper::SafeDownCast(mapper) && !vtkGlyph3DMapper::SafeDownCast(mapper) &&

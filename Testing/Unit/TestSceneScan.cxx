@@ -12,6 +12,7 @@
 #include "vtkNew.h"
 #include "vtkOutlineSource.h"
 #include "vtkOpenGLPolyDataMapper.h"
+#include "vtkPointGaussianMapper.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
@@ -285,6 +286,30 @@ TEST_F(ScanFixture, TranslucentCastsAndTheUnreadableAreLeftOutWithNoticesThatCou
   ASSERT_EQ(this->Messages.Warnings.size(), 1u);
   EXPECT_EQ(this->Messages.Warnings[0],
     "Rendered by VTK without voxel GI: 4 x vtkOpenGLActor (translucent, a backface property).");
+}
+
+TEST_F(ScanFixture, SplatsOfAShapeAreVoxelizedAndGaussianOnesSaid)
+{
+  vtkNew<vtkSphereSource> sphere;
+  sphere->Update();
+  auto add = [&](const char* shape) {
+    vtkNew<vtkPointGaussianMapper> mapper;
+    mapper->SetInputData(sphere->GetOutput());
+    mapper->SetScaleFactor(0.1);
+    mapper->SetSplatShaderCode(shape);
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(mapper);
+    this->Renderer->AddActor(actor);
+  };
+  add("//VTK::Color::Impl\n"); // a splat shape: spheres
+  add(nullptr);                 // VTK's Gaussian blobs: no surface
+  ASSERT_TRUE(this->Next());
+  ASSERT_EQ(this->Scan.GetRecords().size(), 1u); // the shaped splats, through their proxy
+  ASSERT_EQ(this->Messages.Warnings.size(), 1u);
+  EXPECT_NE(this->Messages.Warnings[0].find(
+              "1 x vtkOpenGLActor with a vtkOpenGLPointGaussianMapper (Gaussian splats"),
+    std::string::npos)
+    << this->Messages.Warnings[0];
 }
 
 TEST_F(ScanFixture, OutlineInWireframeNeedsNoNotice)
