@@ -175,19 +175,41 @@ vtkSmartPointer<vtkMapper> ImposterProxies::TubeShapes(vtkActor* actor, double r
   return polygons;
 }
 
-vtkSmartPointer<vtkMapper> ImposterProxies::SphereShapes(vtkActor* actor, double radius)
+namespace
 {
-  vtkNew<vtkSphereSource> sphere;
+// The sphere every proxy glyphs: 12 x 8 facets, finer than the voxels of a sprite's size.
+vtkSmartPointer<vtkSphereSource> ProxySphere(double radius)
+{
+  auto sphere = vtkSmartPointer<vtkSphereSource>::New();
   sphere->SetRadius(radius);
   sphere->SetThetaResolution(12);
   sphere->SetPhiResolution(8);
+  return sphere;
+}
+
+// Spheres glyphed at `points` in `colouring`'s colours (its lookup table, scalar mode and
+// range, array selection): of `radius`, or of radius times the point array `scales` names.
+vtkSmartPointer<vtkMapper> GlyphedSpheres(
+  vtkMapper* colouring, vtkPolyData* points, double radius, const char* scales)
+{
   auto glyphs = vtkSmartPointer<vtkGlyph3DMapper>::New();
-  glyphs->vtkMapper::ShallowCopy(actor->GetMapper());
-  glyphs->SetInputData(Input(actor));
-  glyphs->SetSourceConnection(sphere->GetOutputPort());
-  glyphs->ScalingOff();
+  glyphs->vtkMapper::ShallowCopy(colouring);
+  glyphs->SetInputData(points);
+  glyphs->SetSourceConnection(ProxySphere(radius)->GetOutputPort());
+  glyphs->SetScaling(scales != nullptr);
+  if (scales)
+  {
+    glyphs->SetScaleArray(scales);
+    glyphs->SetScaleModeToScaleByMagnitude();
+  }
   glyphs->OrientOff();
   return glyphs;
+}
+}
+
+vtkSmartPointer<vtkMapper> ImposterProxies::SphereShapes(vtkActor* actor, double radius)
+{
+  return GlyphedSpheres(actor->GetMapper(), Input(actor), radius, nullptr);
 }
 
 vtkSmartPointer<vtkMapper> ImposterProxies::SplatShapes(vtkActor* actor)
@@ -213,19 +235,7 @@ vtkSmartPointer<vtkMapper> ImposterProxies::SplatShapes(vtkActor* actor)
   auto points = vtkSmartPointer<vtkPolyData>::New();
   points->ShallowCopy(input);
   points->GetPointData()->AddArray(radii);
-  vtkNew<vtkSphereSource> sphere;
-  sphere->SetRadius(1.0);
-  sphere->SetThetaResolution(12);
-  sphere->SetPhiResolution(8);
-  auto glyphs = vtkSmartPointer<vtkGlyph3DMapper>::New();
-  glyphs->vtkMapper::ShallowCopy(mapper);
-  glyphs->SetInputData(points);
-  glyphs->SetSourceConnection(sphere->GetOutputPort());
-  glyphs->SetScaleArray(radii->GetName());
-  glyphs->SetScaleModeToScaleByMagnitude();
-  glyphs->ScalingOn();
-  glyphs->OrientOff();
-  return glyphs;
+  return GlyphedSpheres(mapper, points, 1.0, radii->GetName());
 }
 
 namespace
@@ -278,13 +288,9 @@ vtkSmartPointer<vtkPolyData> AtomSpheres(vtkMoleculeMapper* mapper, vtkLookupTab
   centres->SetPoints(molecule->GetAtomicPositionArray());
   centres->GetPointData()->SetScalars(radii); // the glyphs' scale
   centres->GetPointData()->AddArray(colours); // copied to every point of each sphere
-  vtkNew<vtkSphereSource> sphere;
-  sphere->SetRadius(1.0);
-  sphere->SetThetaResolution(12);
-  sphere->SetPhiResolution(8);
   vtkNew<vtkGlyph3D> glyphs;
   glyphs->SetInputData(centres);
-  glyphs->SetSourceConnection(sphere->GetOutputPort());
+  glyphs->SetSourceConnection(ProxySphere(1.0)->GetOutputPort());
   glyphs->SetScaleModeToScaleByScalar();
   glyphs->OrientOff();
   glyphs->Update();
