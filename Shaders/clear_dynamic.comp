@@ -29,11 +29,14 @@ void main()
   voxelNormalX[i] = 0u;
   voxelNormalY[i] = 0u;
   voxelNormalZ[i] = 0u;
-#if VOXEL_CHANNELS > VOXELGI_BASE_CHANNELS
+#ifdef VOXELGI_EMISSION
   voxelEmissionR[i] = 0u;
   voxelEmissionG[i] = 0u;
   voxelEmissionB[i] = 0u;
   voxelEmissionCoverage[i] = 0u;
+#endif
+#ifdef VOXELGI_TRANSLUCENT
+  voxelClearness[i] = 0u;
 #endif
   if (clearStatic != 0)
   {

@@ -113,8 +113,8 @@ void main()
       float behind = dot(color, backVisibility) * attenuation * lambert;
       arriving += vec3(float(!back) * front, float(back) * behind, float(back) * light);
     }
-    // The direct volume's alpha says which side of the winding the bounce gathers over (-1:
-    // the back): VTK lights both sides, and a room seen from inside may be wound outward.
+    // The direct volume's alpha says which side of the winding the bounce gathers over and
+    // the voxel's light leaves toward (negative: the back): VTK lights both sides, and a room seen from inside may be wound outward.
     // The back counts where the lights reach it unoccluded (not through the faces of a
     // closed object, tested without the grazing allowance) and it opens onto space (two
     // voxels free behind it, not the underside of a thin slab lit through the slab).
@@ -122,6 +122,9 @@ void main()
       texelFetch(voxelAlbedo, ivec3(floor(p - normalize(n))), 0).a == 0.0 &&
       texelFetch(voxelAlbedo, ivec3(floor(p - 2.0 * normalize(n))), 0).a == 0.0;
     lit = open && arriving.y > arriving.x && arriving.y > 0.9 * arriving.z ? -1.0 : 1.0;
+    // Half where no light reaches either side: the side is a guess (the mipmaps then let
+    // the voxel's light leave every way, voxel_mipmap.comp).
+    lit *= arriving.x + arriving.y > 0.0 ? 1.0 : 0.5;
     // Premultiplied by the occupancy, as the cone tracer composites it: a volume's voxel
     // stops and scatters part of the light (surfaces: all).
     result = vec4(min(radiance, vec3(VOXELGI_HALF_MAX)) * albedo.a, albedo.a);
@@ -135,6 +138,6 @@ void main()
   imageStore(radianceOut, v, total);
   if (writeDirect != 0)
   {
-    imageStore(directOut, v, vec4(result.rgb, result.a * lit));
+    imageStore(directOut, v, vec4(result.rgb, albedo.a > 0.0 ? lit : 0.0));
   }
 }

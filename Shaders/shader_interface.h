@@ -23,6 +23,9 @@
    fragments. */
 #define VOXELGI_BASE_CHANNELS 7
 #define VOXELGI_EMISSION_CHANNELS 4
+/* When translucent surfaces are voxelized, one more channel: the sum of the fragments'
+   quantized transparency (1 - opacity), at its own binding. */
+#define VOXELGI_CLEARNESS_BINDING 17
 
 /* Shader storage binding of the occupied-brick list (brick_list.glsl). A brick is one work
    group of the per-voxel stages, VOXELGI_LOCAL_SIZE^3 voxels: the resolve lists the occupied

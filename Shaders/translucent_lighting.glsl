@@ -1,8 +1,9 @@
 // Indirect light on VTK's translucent surfaces (TranslucentLighting): declarations placed
 // after VTK's system declarations in the polydata fragment shader of the translucent actors
-// the scan recorded, while VTK's translucent step draws them. They are not in the voxels, so
-// cones from their own surface meet the scene around them, never themselves. VTK's colour of
-// the fragment stays; the diffuse colour times the light arriving is added to it.
+// the scan recorded, while VTK's translucent step draws them. They are in the voxels with
+// partial occupancy: their cones start above their own voxels (voxelConeFootprint), as the
+// trace's do. VTK's colour of the fragment stays; the diffuse colour times the light arriving
+// is added to it.
 #extension GL_ARB_shading_language_420pack : require
 #include "cone_tracing.glsl"
 
@@ -35,7 +36,7 @@ vec3 voxelgiIndirect(vec3 positionVC, vec3 normalVC)
     vec3 d = normalize(voxelgiConeDirections[i].x * t + voxelgiConeDirections[i].y * b +
       voxelgiConeDirections[i].z * n);
     gathered += voxelConeTrace(p + n * 0.5, d, voxelgiConeTanHalf, 1.0, voxelgiMaxDistance, 0.0,
-      p, vec3(0.0), ignored).rgb;
+      p, n, ignored).rgb;
   }
   return voxelgiIndirectIntensity * gathered / float(max(voxelgiConeCount, 1));
 }

@@ -5,6 +5,9 @@
 layout(local_size_x = VOXELGI_LOCAL_SIZE, local_size_y = VOXELGI_LOCAL_SIZE, local_size_z = VOXELGI_LOCAL_SIZE) in;
 
 uniform sampler3D voxelRadiance;
+uniform sampler3D voxelNormal; // unit normal (rgb), a surface (a > 0)
+uniform sampler3D voxelDirect; // a < 0: the lights reach the back of the winding
+uniform int litSides;          // 1: voxelDirect says which side is lit
 uniform sampler3D voxelPosX;
 uniform sampler3D voxelNegX;
 uniform sampler3D voxelPosY;
@@ -21,11 +24,37 @@ layout(rgba16f, binding = 3) uniform writeonly image3D outNegY;
 layout(rgba16f, binding = 4) uniform writeonly image3D outPosZ;
 layout(rgba16f, binding = 5) uniform writeonly image3D outNegZ;
 
+const vec3 travel[6] = vec3[6](vec3(1, 0, 0), vec3(-1, 0, 0), vec3(0, 1, 0), vec3(0, -1, 0),
+  vec3(0, 0, 1), vec3(0, 0, -1));
+
+// A surface's voxel sends its light to the side it faces (the lit side of the winding): a
+// cone travelling along d sees it when d points into its front, none from behind (a table
+// lit from above does not light the floor under it), half edge on. It still blocks either
+// way. Voxels without a normal (volumes, opposing faces) send it every way, and so does every
+// voxel where no lit side was recorded (no bounces: a room wound outward would go dark).
+vec4 fetchRadiance(int direction, ivec3 c)
+{
+  vec4 radiance = texelFetch(voxelRadiance, c, 0);
+  vec4 normal = texelFetch(voxelNormal, c, 0);
+  vec3 n = normal.xyz * 2.0 - 1.0;
+  if (litSides == 0 || radiance.a == 0.0 || normal.a == 0.0 || dot(n, n) < 0.25)
+  {
+    return radiance;
+  }
+  float side = texelFetch(voxelDirect, c, 0).a;
+  if (abs(side) < 0.75)
+  {
+    return radiance; // no light reaches it: which side is lit is not known
+  }
+  float facing = dot(normalize(n) * sign(side), travel[direction]);
+  return vec4(radiance.rgb * clamp(1.0 - 2.0 * facing, 0.0, 1.0), radiance.a);
+}
+
 vec4 fetchSource(int direction, ivec3 c)
 {
   if (sourceIsRadiance != 0)
   {
-    return texelFetch(voxelRadiance, c, 0);
+    return fetchRadiance(direction, c);
   }
   if (direction == 0) return texelFetch(voxelPosX, c, sourceLevel);
   if (direction == 1) return texelFetch(voxelNegX, c, sourceLevel);

@@ -48,6 +48,14 @@ float voxelDepthShare(float lo, float hi, int k)
 // that the triangle covers; it weighs only emission (voxel_common.glsl).
 void voxelStore(ivec3 v, vec4 color, vec3 faceNormal, float coverage)
 {
+#ifdef VOXELGI_TRANSLUCENT
+  // (a fragment a lookup table hides takes no part: VTK shows what lies behind it)
+  uint clearness = 255u - voxelQuantize(color.a);
+  if (clearness == 255u)
+  {
+    return;
+  }
+#endif
   if (voxelStaticPass != 0)
   {
     imageStore(voxelFlag, v, uvec4(1u));
@@ -65,7 +73,13 @@ void voxelStore(ivec3 v, vec4 color, vec3 faceNormal, float coverage)
   atomicAdd(voxelNormalX[i], voxelQuantize(n.x));
   atomicAdd(voxelNormalY[i], voxelQuantize(n.y));
   atomicAdd(voxelNormalZ[i], voxelQuantize(n.z));
-#if VOXEL_CHANNELS > VOXELGI_BASE_CHANNELS
+#ifdef VOXELGI_TRANSLUCENT
+  if (clearness > 0u)
+  {
+    atomicAdd(voxelClearness[i], clearness);
+  }
+#endif
+#ifdef VOXELGI_EMISSION
   vec3 e = clamp(voxelEmission, 0.0, VOXELGI_HALF_MAX);
   if (any(greaterThan(e, vec3(0.0))))
   {

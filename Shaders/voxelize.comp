@@ -31,7 +31,7 @@ layout(std430, binding = VOXELGI_LARGE_TRIANGLE_BINDING) buffer VoxelLargeBuffer
 uniform mat4 voxelGridFromModel;
 uniform uint voxelTriangleCount;
 uniform int voxelColorMode;  // 0: the actor's colour, 1: per vertex, 2: per triangle (cell)
-uniform vec3 voxelColor;     // diffuse coefficient times the actor's diffuse colour
+uniform vec4 voxelColor;     // diffuse coefficient times the actor's diffuse colour; opacity
 uniform float voxelDiffuse;  // diffuse coefficient: scales scalar colours, as in VTK's shader
 uniform int voxelLargePass;
 uniform uint voxelLargeSlot;
@@ -59,16 +59,17 @@ vec4 voxelColorAt(uvec4 tri, vec3 q[3], float area2, vec2 c)
   if (voxelColorMode == 1)
   {
     vec3 b = voxelBarycentric(q, area2, c);
-    vec3 color = b.x * unpackUnorm4x8(voxelVertices[tri.x].color).rgb +
-      b.y * unpackUnorm4x8(voxelVertices[tri.y].color).rgb +
-      b.z * unpackUnorm4x8(voxelVertices[tri.z].color).rgb;
-    return vec4(voxelDiffuse * color, 1.0);
+    vec4 color = b.x * unpackUnorm4x8(voxelVertices[tri.x].color) +
+      b.y * unpackUnorm4x8(voxelVertices[tri.y].color) +
+      b.z * unpackUnorm4x8(voxelVertices[tri.z].color);
+    return vec4(voxelDiffuse * color.rgb, color.a);
   }
   if (voxelColorMode == 2)
   {
-    return vec4(voxelDiffuse * unpackUnorm4x8(tri.w).rgb, 1.0);
+    vec4 color = unpackUnorm4x8(tri.w);
+    return vec4(voxelDiffuse * color.rgb, color.a);
   }
-  return vec4(voxelColor, 1.0);
+  return voxelColor;
 }
 
 // The pixel columns of the grid the projection may touch: [lo, hi] on each axis.

@@ -33,8 +33,8 @@ struct PropReading
   bool HasBounds = false;     // visible, with initialized bounds
   double Bounds[6] = {};
   std::string LeftOut;    // why it is not voxelized (empty: it is, or it has no bounds)
-  bool Translucent = false; // an actor VTK draws in its translucent step (not voxelized: it
-                            // casts shadows that pass part of the light)
+  bool Translucent = false; // an actor VTK draws in its translucent step (voxelized with
+                            // partial occupancy; its shadows pass part of the light)
 };
 
 class PropReader

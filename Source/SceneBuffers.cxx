@@ -293,8 +293,10 @@ const SceneBuffers::Entry* SceneBuffers::Update(vtkActor* actor, std::string& wh
     return nullptr;
   }
   Entry& entry = this->Entries[actor];
+  const double opacity = actor->GetProperty()->GetOpacity();
   if (entry.Actor == actor && entry.Input == input && entry.InputTime == input->GetMTime() &&
-    entry.MapperTime == mapper->GetMTime())
+    entry.MapperTime == mapper->GetMTime() &&
+    (entry.Opacity == opacity || entry.Colors == TriangleColors::Actor))
   {
     return &entry;
   }
@@ -308,6 +310,7 @@ const SceneBuffers::Entry* SceneBuffers::Update(vtkActor* actor, std::string& wh
   entry.Input = input;
   entry.InputTime = input->GetMTime();
   entry.MapperTime = mapper->GetMTime(); // after MapScalars, which may build a lookup table
+  entry.Opacity = opacity;
   entry.Shift = arrays.Shift;
   entry.Colors = arrays.Colors;
   entry.TriangleCount = static_cast<unsigned int>(arrays.Indices.size() / 3);

@@ -72,6 +72,7 @@ public:
     vtkPolyData* Input = nullptr; // identity only, never dereferenced
     vtkMTimeType InputTime = 0;
     vtkMTimeType MapperTime = 0;
+    double Opacity = 1.0; // the actor's, in the scalar colours' alpha
     StorageBuffer Vertices;
     StorageBuffer Indices;    // also the element buffer of the shadow maps' draws
     StorageBuffer CellColors; // per-cell colouring only

@@ -394,25 +394,29 @@ struct Findings
   bool Full = false;
   bool Dynamic = false;
   bool Emission = false;
+  bool Translucent = false;
   bool SettingsChanged = false;
   bool Invalidate = false;
+};
+
+/// Writes the milliseconds since its construction to `Result` when it goes out of scope.
+struct StopWatch
+{
+  std::chrono::steady_clock::time_point Start;
+  double& Result;
+  ~StopWatch()
+  {
+    this->Result =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - this->Start)
+        .count();
+  }
 };
 }
 
 bool SceneScan::Scan(vtkRenderer* renderer, const Settings& settings, Ranks& ranks,
   VoxelUpdate& update, ScanMessages& messages, bool inRender)
 {
-  const auto start = std::chrono::steady_clock::now();
-  struct StopWatch
-  {
-    std::chrono::steady_clock::time_point Start;
-    double& Result;
-    ~StopWatch()
-    {
-      this->Result = std::chrono::duration<double, std::milli>(
-        std::chrono::steady_clock::now() - this->Start).count();
-    }
-  } watch{ start, this->Milliseconds };
+  const StopWatch watch{ std::chrono::steady_clock::now(), this->Milliseconds };
 
   update = VoxelUpdate();
   std::vector<ActorRecord> records;
@@ -427,6 +431,7 @@ bool SceneScan::Scan(vtkRenderer* renderer, const Settings& settings, Ranks& ran
   for (const ActorRecord& record : records)
   {
     found.Emission = found.Emission || Emits(record.Emission);
+    found.Translucent = found.Translucent || record.Translucent;
   }
   found.SettingsChanged = !this->Voxelized || !this->BuiltGrid.IsValid() ||
     this->BuiltGrid.Resolution != settings.VoxelResolution ||
@@ -437,7 +442,7 @@ bool SceneScan::Scan(vtkRenderer* renderer, const Settings& settings, Ranks& ran
   // Distributed: one grid around every rank's piece, and what any rank must rebuild, all
   // rebuild.
   ranks.Union(found.Bounds, { &found.Collected, &found.Full, &found.Dynamic, &found.Emission,
-                              &found.SettingsChanged, &found.Invalidate });
+                              &found.Translucent, &found.SettingsChanged, &found.Invalidate });
   this->InvalidateRequested = found.Invalidate;
   if (!found.Collected)
   {
@@ -446,7 +451,8 @@ bool SceneScan::Scan(vtkRenderer* renderer, const Settings& settings, Ranks& ran
     return false;
   }
   const double* bounds = found.Bounds;
-  const bool settingsChanged = found.SettingsChanged || found.Emission != this->BuiltEmission;
+  const bool settingsChanged = found.SettingsChanged || found.Emission != this->BuiltEmission ||
+    found.Translucent != this->BuiltTranslucent;
   // The scene left the grid or shrank to under half of it.
   const double extent =
     std::max({ bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] });
@@ -475,6 +481,7 @@ bool SceneScan::Scan(vtkRenderer* renderer, const Settings& settings, Ranks& ran
   }
   update.Run = true;
   update.Emission = found.Emission;
+  update.Translucent = found.Translucent;
   update.Volumes = !volumes.empty();
   this->Pending = std::move(records);
   this->PendingVolumes = std::move(volumes);
@@ -491,6 +498,7 @@ void SceneScan::Accept(const VoxelUpdate& update, const Settings& settings)
   this->BuiltGrid = update.Grid;
   this->BuiltPadding = settings.GridPadding;
   this->BuiltEmission = update.Emission;
+  this->BuiltTranslucent = update.Translucent;
   this->BuiltHardware = settings.HardwareConservativeRaster;
   this->BuiltCompute = settings.ComputeVoxelization;
   this->Voxelized = true;

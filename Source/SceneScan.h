@@ -50,7 +50,7 @@ struct ActorRecord
   // tell): stages that keep results per actor compare it (ShadowMaps).
   std::uint64_t Revision = 0;
   // Translucent (VTK draws it in its translucent step): it casts shadows that pass part of
-  // the light (ShadowTransmittance) and is not voxelized.
+  // the light (ShadowTransmittance) and is voxelized with partial occupancy.
   bool Translucent = false;
 };
 
@@ -67,6 +67,7 @@ struct VoxelUpdate
   bool Run = false;     // rebuild any voxels at all
   bool Full = false;    // all of them (else the dynamic actors only)
   bool Emission = false; // the scene has emissive props
+  bool Translucent = false; // the scene has translucent actors (partial occupancy)
   bool Volumes = false;  // the scene has volumes to resample (VolumeVoxels)
   VoxelGrid Grid;       // the grid to voxelize into
 };
@@ -145,6 +146,7 @@ private:
   VoxelGrid BuiltGrid;
   double BuiltPadding = -1.0;
   bool BuiltEmission = false;
+  bool BuiltTranslucent = false;
   bool BuiltHardware = false;
   bool BuiltCompute = false;
   std::uint64_t Revisions = 0; // the last ActorRecord::Revision given

@@ -12,9 +12,9 @@
 namespace voxelgi
 {
 
-VoxelMemoryNeed::VoxelMemoryNeed(
-  bool emission, const Settings& settings, const std::vector<vtkLight*>& lights)
-  : Voxelization(VoxelizePass::RequiredBytes(settings.VoxelResolution, emission))
+VoxelMemoryNeed::VoxelMemoryNeed(bool emission, bool translucent, const Settings& settings,
+  const std::vector<vtkLight*>& lights)
+  : Voxelization(VoxelizePass::RequiredBytes(settings.VoxelResolution, emission, translucent))
   , Radiance(LightVoxels::RequiredBytes(settings.VoxelResolution, settings))
   , Mipmaps(VoxelMipmap::RequiredBytes(settings.VoxelResolution, settings))
   , ShadowMaps(settings.LightOcclusion == LIGHT_OCCLUSION_SHADOW_MAPS
@@ -23,10 +23,10 @@ VoxelMemoryNeed::VoxelMemoryNeed(
 {
 }
 
-bool VoxelMemory::Fits(
-  bool emission, const Settings& settings, std::size_t held, std::string& error)
+bool VoxelMemory::Fits(bool emission, bool translucent, const Settings& settings,
+  std::size_t held, std::string& error)
 {
-  const VoxelMemoryNeed need(emission, settings);
+  const VoxelMemoryNeed need(emission, translucent, settings);
   if (need.Volumes() == this->FittingBytes)
   {
     return true;

@@ -16,12 +16,13 @@ namespace voxelgi
 {
 struct Settings;
 
-/// What the voxel volumes of `settings` need, per stage, and the shadow maps of `lights`.
+/// What the voxel volumes of `settings` need, per stage (with the channels of emission and of
+/// translucent surfaces where the scene has them), and the shadow maps of `lights`.
 struct VoxelMemoryNeed
 {
   std::size_t Voxelization, Radiance, Mipmaps, ShadowMaps;
-  VoxelMemoryNeed(
-    bool emission, const Settings& settings, const std::vector<vtkLight*>& lights = {});
+  VoxelMemoryNeed(bool emission, bool translucent, const Settings& settings,
+    const std::vector<vtkLight*>& lights = {});
   /// The volumes, refused when they do not fit (the shadow maps degrade instead).
   std::size_t Volumes() const { return this->Voxelization + this->Radiance + this->Mipmaps; }
   std::size_t Total() const { return this->Volumes() + this->ShadowMaps; }
@@ -30,9 +31,10 @@ struct VoxelMemoryNeed
 class VoxelMemory
 {
 public:
-  /// Whether the volumes of `settings` (with `emission`) fit the free memory, counting the
-  /// `held` bytes the pass frees before making them; if not, `error` says why.
-  bool Fits(bool emission, const Settings& settings, std::size_t held, std::string& error);
+  /// Whether the volumes of `settings` (with `emission`, `translucent`) fit the free memory,
+  /// counting the `held` bytes the pass frees before making them; if not, `error` says why.
+  bool Fits(bool emission, bool translucent, const Settings& settings, std::size_t held,
+    std::string& error);
   /// The volumes were freed: check again before the next ones.
   void Forget() { this->FittingBytes = 0; }
 

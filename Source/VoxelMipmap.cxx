@@ -2,6 +2,7 @@
 
 #include "Frame.h"
 #include "LightVoxels.h"
+#include "VoxelizePass.h"
 #include "VoxelGIShaders.h"
 #include "shader_interface.h"
 #include "StageIds.h"
@@ -77,6 +78,9 @@ void VoxelMipmap::Build(vtkOpenGLRenderWindow* renWin)
   }
   SamplerBindings samplers(renWin);
   const int radianceUnit = samplers.Add(radiance);
+  const Volume3D& direct = this->Lighting.GetDirect();
+  const int normalUnit = samplers.Add(this->Voxels.GetNormal());
+  const int directUnit = samplers.Add(direct.IsAllocated() ? direct : radiance);
   int units[6];
   for (int d = 0; d < 6; ++d)
   {
@@ -88,6 +92,9 @@ void VoxelMipmap::Build(vtkOpenGLRenderWindow* renWin)
   }
   this->Program.Use(renWin);
   this->Program.SetInt("voxelRadiance", radianceUnit);
+  this->Program.SetInt("voxelNormal", normalUnit);
+  this->Program.SetInt("voxelDirect", directUnit);
+  this->Program.SetInt("litSides", direct.IsAllocated() ? 1 : 0);
   for (int d = 0; d < 6; ++d)
   {
     this->Program.SetInt(SourceNames[d], units[d]);

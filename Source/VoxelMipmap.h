@@ -20,12 +20,14 @@ namespace voxelgi
 struct Frame;
 struct Settings;
 class LightVoxels;
+class VoxelizePass;
 
 class VoxelMipmap
 {
 public:
-  explicit VoxelMipmap(LightVoxels& lighting)
-    : Lighting(lighting)
+  VoxelMipmap(const VoxelizePass& voxels, LightVoxels& lighting)
+    : Voxels(voxels)
+    , Lighting(lighting)
   {
   }
 
@@ -45,6 +47,7 @@ public:
   void ReleaseGraphicsResources(vtkWindow* window);
 
 private:
+  const VoxelizePass& Voxels;
   LightVoxels& Lighting;
   bool Anisotropic = true;
   GLProgram Program;

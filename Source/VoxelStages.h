@@ -29,7 +29,7 @@ struct VoxelStages
   VoxelGridBlock GridBlock;
   ShadowMaps Shadows{ *Voxelize };
   LightVoxels Lighting{ *Voxelize, Shadows };
-  VoxelMipmap Mipmap{ Lighting };
+  VoxelMipmap Mipmap{ *Voxelize, Lighting };
   VoxelBounce Bounce{ *Voxelize, Lighting, Mipmap };
 
   /// Point the frame at these stages' volumes, maps and lights.

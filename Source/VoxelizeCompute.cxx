@@ -98,9 +98,10 @@ void VoxelizeCompute::Draw(const Frame& frame, const std::vector<Item>& items, b
       vtkProperty* property = item.Actor->GetProperty();
       const double* diffuseColor = property->GetDiffuseColor();
       const float diffuse = static_cast<float>(property->GetDiffuse());
-      const float color[3] = { diffuse * static_cast<float>(diffuseColor[0]),
+      const float color[4] = { diffuse * static_cast<float>(diffuseColor[0]),
         diffuse * static_cast<float>(diffuseColor[1]),
-        diffuse * static_cast<float>(diffuseColor[2]) };
+        diffuse * static_cast<float>(diffuseColor[2]),
+        static_cast<float>(property->GetOpacity()) };
       const float emission[3] = { static_cast<float>(item.Emission[0]),
         static_cast<float>(item.Emission[1]), static_cast<float>(item.Emission[2]) };
       const std::array<float, 16> matrix = GridFromModel(frame.Grid, item.Actor, buffers.Shift);
@@ -113,7 +114,7 @@ void VoxelizeCompute::Draw(const Frame& frame, const std::vector<Item>& items, b
       this->Program.SetMat4Array("voxelGridFromModel", 1, matrix.data());
       this->Program.SetUInt("voxelTriangleCount", buffers.TriangleCount);
       this->Program.SetInt("voxelColorMode", static_cast<int>(buffers.Colors));
-      this->Program.SetVec3Array("voxelColor", 1, color);
+      this->Program.SetVec4("voxelColor", color);
       this->Program.SetFloat("voxelDiffuse", diffuse);
       this->Program.SetVec3Array("voxelEmission", 1, emission);
       this->Program.SetInt("voxelStaticPass", staticPass ? 1 : 0);

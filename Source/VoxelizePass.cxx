@@ -27,9 +27,22 @@ vtkStandardNewMacro(VoxelizePass);
 
 namespace
 {
-int Channels(bool emission)
+constexpr int ClearnessChannel = VOXELGI_BASE_CHANNELS + VOXELGI_EMISSION_CHANNELS;
+
+/// Whether the variant sums channel c (voxel_common.glsl's order, then clearness).
+bool Used(int c, bool emission, bool translucent)
 {
-  return VOXELGI_BASE_CHANNELS + (emission ? VOXELGI_EMISSION_CHANNELS : 0);
+  return c < VOXELGI_BASE_CHANNELS || (c < ClearnessChannel ? emission : translucent);
+}
+
+int Channels(bool emission, bool translucent)
+{
+  return VOXELGI_BASE_CHANNELS + (emission ? VOXELGI_EMISSION_CHANNELS : 0) + (translucent ? 1 : 0);
+}
+
+unsigned int Binding(int c)
+{
+  return static_cast<unsigned int>(c < ClearnessChannel ? c : VOXELGI_CLEARNESS_BINDING);
 }
 
 std::size_t Cube(int resolution)
@@ -56,16 +69,18 @@ void Barrier()
 VoxelizePass::VoxelizePass() = default;
 VoxelizePass::~VoxelizePass() = default;
 
-std::size_t VoxelizePass::RequiredBytes(int resolution, bool emission)
+std::size_t VoxelizePass::RequiredBytes(int resolution, bool emission, bool translucent)
 {
   // accumulators (4 B per channel) + flag (1 B) + albedo, normal (4 B) [+ emission (8 B)]
-  const std::size_t perVoxel = 4 * Channels(emission) + 1 + 4 + 4 + (emission ? 8 : 0);
+  const std::size_t perVoxel =
+    4 * Channels(emission, translucent) + 1 + 4 + 4 + (emission ? 8 : 0);
   return Cube(resolution) * perVoxel + BrickListBytes(resolution);
 }
 
 std::string VoxelizePass::Defines() const
 {
-  return "#define VOXEL_CHANNELS " + std::to_string(Channels(this->Emission)) + "\n";
+  return std::string(this->Emission ? "#define VOXELGI_EMISSION\n" : "") +
+    (this->Translucent ? "#define VOXELGI_TRANSLUCENT\n" : "");
 }
 
 //------------------------------------------------------------------------------
@@ -73,13 +88,15 @@ bool VoxelizePass::Prepare(const Frame& frame, std::string& error)
 {
   const int resolution = frame.Plan.Voxels.Grid.Resolution;
   const bool emission = frame.Plan.Voxels.Emission;
+  const bool translucent = frame.Plan.Voxels.Translucent;
   this->HardwareConservative = frame.Config.HardwareConservativeRaster;
   if (!this->Volumes.Prepare(frame, error))
   {
     this->ReleaseGraphicsResources(frame.Window);
     return false;
   }
-  if (resolution == this->Resolution && emission == this->Emission && this->ClearProgram.IsReady())
+  if (resolution == this->Resolution && emission == this->Emission &&
+    translucent == this->Translucent && this->ClearProgram.IsReady())
   {
     return this->PrepareResolve(error);
   }
@@ -95,35 +112,17 @@ bool VoxelizePass::Prepare(const Frame& frame, std::string& error)
     error = msg.str();
     return false;
   }
-  const bool variantChanged = emission != this->Emission || !this->ClearProgram.IsReady();
+  const bool variantChanged =
+    emission != this->Emission || translucent != this->Translucent || !this->ClearProgram.IsReady();
   this->Resolution = resolution;
   this->Emission = emission;
-  bool ok = true;
-  for (int c = 0; c < Channels(emission); ++c)
-  {
-    ok = ok && this->Accumulators[c].Allocate(channelBytes);
-  }
-  for (int c = Channels(emission); c < VOXELGI_BASE_CHANNELS + VOXELGI_EMISSION_CHANNELS; ++c)
-  {
-    this->Accumulators[c].Release();
-  }
-  ok = ok && this->BrickList.Allocate(BrickListBytes(resolution));
-  ok = ok && this->FlagVolume.Allocate(GL_R8UI, resolution);
-  ok = ok && this->AlbedoVolume.Allocate(GL_RGBA8, resolution);
-  ok = ok && this->NormalVolume.Allocate(GL_RGBA8, resolution);
-  if (emission)
-  {
-    ok = ok && this->EmissionVolume.Allocate(GL_RGBA16F, resolution);
-  }
-  else
-  {
-    this->EmissionVolume.Release();
-  }
-  if (!ok)
+  this->Translucent = translucent;
+  if (!this->Allocate(channelBytes))
   {
     std::ostringstream msg;
     msg << "could not allocate the voxel volumes for resolution " << resolution << " ("
-        << RequiredBytes(resolution, emission) / (1024 * 1024) << " MiB of GPU memory)";
+        << RequiredBytes(resolution, emission, translucent) / (1024 * 1024)
+        << " MiB of GPU memory)";
     error = msg.str();
     this->ReleaseGraphicsResources(frame.Window);
     return false;
@@ -138,7 +137,7 @@ bool VoxelizePass::Prepare(const Frame& frame, std::string& error)
       this->ReleaseGraphicsResources(frame.Window);
       return false;
     }
-    this->ShaderStageTime.Modified(); // the mapper shaders depend on the emission variant
+    this->ShaderStageTime.Modified(); // the mapper shaders depend on the variant
   }
   if (!this->Compute.Prepare(this->Defines(), error) || !this->PrepareResolve(error))
   {
@@ -146,6 +145,36 @@ bool VoxelizePass::Prepare(const Frame& frame, std::string& error)
     return false;
   }
   return true;
+}
+
+bool VoxelizePass::Allocate(std::size_t channelBytes)
+{
+  const int resolution = this->Resolution;
+  bool ok = true;
+  for (int c = 0; c < static_cast<int>(this->Accumulators.size()); ++c)
+  {
+    if (Used(c, this->Emission, this->Translucent))
+    {
+      ok = ok && this->Accumulators[c].Allocate(channelBytes);
+    }
+    else
+    {
+      this->Accumulators[c].Release();
+    }
+  }
+  ok = ok && this->BrickList.Allocate(BrickListBytes(resolution));
+  ok = ok && this->FlagVolume.Allocate(GL_R8UI, resolution);
+  ok = ok && this->AlbedoVolume.Allocate(GL_RGBA8, resolution);
+  ok = ok && this->NormalVolume.Allocate(GL_RGBA8, resolution);
+  if (this->Emission)
+  {
+    ok = ok && this->EmissionVolume.Allocate(GL_RGBA16F, resolution);
+  }
+  else
+  {
+    this->EmissionVolume.Release();
+  }
+  return ok;
 }
 
 bool VoxelizePass::PrepareResolve(std::string& error)
@@ -188,9 +217,9 @@ void VoxelizePass::Run(const Frame& frame)
   this->PropEmissions.clear();
   for (const ActorRecord& record : *frame.Actors)
   {
-    if ((!full && !record.Dynamic) || record.Translucent)
+    if (!full && !record.Dynamic)
     {
-      continue; // its voxels are kept; a translucent actor's share of light is in the shadows
+      continue; // its voxels are kept
     }
     const SceneBuffers::Entry* buffers = this->Resident(frame, record.Actor);
     if (buffers)
@@ -287,8 +316,12 @@ void VoxelizePass::MergeSums(const Frame& frame)
     this->FlagVolume.Read(GL_RED_INTEGER, GL_UNSIGNED_BYTE, flags.data());
   }
   std::vector<unsigned int> sums(voxels);
-  for (int c = 0; c < Channels(this->Emission); ++c)
+  for (int c = 0; c < static_cast<int>(this->Accumulators.size()); ++c)
   {
+    if (!this->Accumulators[c].IsAllocated())
+    {
+      continue;
+    }
     this->Accumulators[c].Read(0, voxels * sizeof(unsigned int), sums.data());
     for (std::size_t i = 0; i < flags.size(); ++i)
     {
@@ -354,9 +387,12 @@ void VoxelizePass::Render(const vtkRenderState* s)
 //------------------------------------------------------------------------------
 void VoxelizePass::BindAccumulators() const
 {
-  for (int c = 0; c < Channels(this->Emission); ++c)
+  for (int c = 0; c < static_cast<int>(this->Accumulators.size()); ++c)
   {
-    this->Accumulators[c].Bind(static_cast<unsigned int>(c));
+    if (this->Accumulators[c].IsAllocated())
+    {
+      this->Accumulators[c].Bind(Binding(c));
+    }
   }
   this->FlagVolume.BindImage(VOXELGI_FLAG_IMAGE_UNIT, GL_READ_WRITE);
 }
@@ -378,10 +414,7 @@ void VoxelizePass::Resolve(const Frame& frame)
   const unsigned int emptyList[4] = { 0, 1, 1, 0 }; // no brick yet; 1 x 1 in y and z
   this->BrickList.Upload(emptyList, sizeof(emptyList));
   this->BrickList.Bind(VOXELGI_BRICK_LIST_BINDING);
-  for (int c = 0; c < Channels(this->Emission); ++c)
-  {
-    this->Accumulators[c].Bind(static_cast<unsigned int>(c));
-  }
+  this->BindAccumulators();
   this->AlbedoVolume.BindImage(1, GL_WRITE_ONLY);
   this->NormalVolume.BindImage(2, GL_WRITE_ONLY);
   if (this->Emission)
@@ -466,7 +499,7 @@ std::size_t VoxelizePass::MemoryBytes() const
 std::size_t VoxelizePass::EmissionBytes() const
 {
   std::size_t bytes = this->EmissionVolume.Bytes();
-  for (int c = VOXELGI_BASE_CHANNELS; c < VOXELGI_BASE_CHANNELS + VOXELGI_EMISSION_CHANNELS; ++c)
+  for (int c = VOXELGI_BASE_CHANNELS; c < ClearnessChannel; ++c)
   {
     bytes += this->Accumulators[c].Bytes();
   }

@@ -55,7 +55,7 @@ public:
   void ReleaseGraphicsResources(vtkWindow* window) override;
 
   /// Bytes one resolution needs, for messages and for limits checks before allocating.
-  static std::size_t RequiredBytes(int resolution, bool emission);
+  static std::size_t RequiredBytes(int resolution, bool emission, bool translucent);
 
   int GetResolution() const { return this->Resolution; }
   bool HasEmission() const { return this->Emission; }
@@ -102,6 +102,9 @@ private:
   void operator=(const VoxelizePass&) = delete;
 
   std::string Defines() const;
+  /// Allocate the accumulators (`channelBytes` each) and volumes of the current resolution
+  /// and variant, releasing those it does not use; false when GL could not.
+  bool Allocate(std::size_t channelBytes);
   /// Build the resolve for the frame's variant (emission, volumes).
   bool PrepareResolve(std::string& error);
   /// Aim the voxelization camera: its view volume is the grid cube.
@@ -124,10 +127,11 @@ private:
 
   int Resolution = 0;
   bool Emission = false;
+  bool Translucent = false; // the variant that voxelizes translucent surfaces
   bool HardwareConservative = false;
   bool StaticPass = false;
   std::unordered_map<vtkProp*, std::array<double, 3>> PropEmissions;
-  std::array<StorageBuffer, VOXELGI_BASE_CHANNELS + VOXELGI_EMISSION_CHANNELS> Accumulators;
+  std::array<StorageBuffer, VOXELGI_BASE_CHANNELS + VOXELGI_EMISSION_CHANNELS + 1> Accumulators;
   StorageBuffer BrickList;
   Volume3D FlagVolume;
   Volume3D AlbedoVolume;

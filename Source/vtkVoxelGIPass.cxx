@@ -162,7 +162,7 @@ unsigned long long vtkVoxelGIPass::GetAllocatedBytes(int resource) const
 
 unsigned long long vtkVoxelGIPass::GetRequiredVoxelMemoryBytes(bool emission)
 {
-  return voxelgi::VoxelMemoryNeed(emission,
+  return voxelgi::VoxelMemoryNeed(emission, false,
     voxelgi::Snapshot(this, false, this->GetSoftwareProfileActive()),
     this->Internal->Planner.Lights.GetLights())
     .Total();
@@ -335,7 +335,8 @@ bool vtkVoxelGIPass::Voxelize()
   }
   std::string error;
   const bool prepared = !refused &&
-    in.Memory.Fits(update.Emission, frame.Config, this->GetVoxelMemoryBytes(), error) &&
+    in.Memory.Fits(update.Emission, update.Translucent, frame.Config,
+      this->GetVoxelMemoryBytes(), error) &&
     in.Voxels.Voxelize->Prepare(frame, error);
   // Ranks voxelize together (every Run is collective when distributed).
   if (!in.Processes.All(prepared))

@@ -16,7 +16,8 @@
  * cone-traced per pixel from a G-buffer: indirect diffuse light, a specular cone, ambient
  * occlusion and the lights' shadows (shadow maps, or cones) are composited with VTK's own
  * shading of the opaque geometry. Translucent,
- * volume and overlay props are then rendered by VTK's normal steps on top.
+ * volume and overlay props are then rendered by VTK's normal steps on top; translucent
+ * actors and volumes are in the voxels too, with the partial occupancy of their opacity.
  *
  * Actors are static unless marked dynamic (SetPropDynamic()) or, with AutoDynamic on,
  * once they change after having been voxelized: dynamic actors are revoxelized alone while
@@ -260,7 +261,7 @@ public:
 
   enum Volumes
   {
-    VOLUME_ALBEDO = 0, ///< unsigned char RGBA, alpha 255 where occupied
+    VOLUME_ALBEDO = 0, ///< unsigned char RGBA, alpha the share of light stopped (255: opaque)
     VOLUME_NORMAL,     ///< unsigned char RGBA, normal * 127.5 + 127.5
     VOLUME_EMISSION,   ///< float RGBA (only when the scene has emission)
     VOLUME_COUNT,      ///< unsigned int: fragments averaged into each voxel

