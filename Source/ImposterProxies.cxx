@@ -4,6 +4,8 @@
 #include "vtkAppendPolyData.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkGlyph3D.h"
@@ -19,6 +21,7 @@
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
 #include "vtkPointGaussianMapper.h"
+#include "vtkPointSet.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
@@ -43,8 +46,10 @@ bool ImposterProxies::Splats(vtkActor* actor)
 {
   auto* mapper = vtkPointGaussianMapper::SafeDownCast(actor->GetMapper());
   // Without a shape, VTK's default splat is a translucent Gaussian blob: no surface.
+  // ParaView's Point Gaussian representation gives its mapper a composite dataset.
+  vtkDataObject* input = mapper ? mapper->GetInputDataObject(0, 0) : nullptr;
   return mapper && mapper->GetSplatShaderCode() && mapper->GetScaleFactor() > 0.0 &&
-    vtkPolyData::SafeDownCast(mapper->GetInputDataObject(0, 0));
+    (vtkPolyData::SafeDownCast(input) || vtkCompositeDataSet::SafeDownCast(input));
 }
 
 bool ImposterProxies::Molecule(vtkActor* actor)
@@ -110,9 +115,9 @@ vtkActor* ImposterProxies::Update(
   vtkActor* actor, vtkMTimeType signature, vtkRenderer* renderer, std::string& reason)
 {
   auto* molecule = vtkMoleculeMapper::SafeDownCast(actor->GetMapper());
-  vtkPolyData* input = Input(actor);
+  vtkDataObject* input = molecule ? nullptr : actor->GetMapper()->GetInputDataObject(0, 0);
   const vtkIdType points = molecule ? molecule->GetInput()->GetNumberOfAtoms()
-    : input                         ? input->GetNumberOfPoints()
+    : input                         ? input->GetNumberOfElements(vtkDataObject::POINT)
                                     : 0;
   if (points == 0)
   {
@@ -212,10 +217,45 @@ vtkSmartPointer<vtkMapper> ImposterProxies::SphereShapes(vtkActor* actor, double
   return GlyphedSpheres(actor->GetMapper(), Input(actor), radius, nullptr);
 }
 
+namespace
+{
+// The points a splat mapper draws: its polydata, or its composite input's leaves' points
+// and point data gathered into one (the arrays every leaf has).
+vtkSmartPointer<vtkPolyData> SplatPoints(vtkMapper* mapper)
+{
+  vtkDataObject* input = mapper->GetInputDataObject(0, 0);
+  auto* composite = vtkCompositeDataSet::SafeDownCast(input);
+  if (!composite)
+  {
+    return vtkPolyData::SafeDownCast(input);
+  }
+  vtkNew<vtkAppendPolyData> append;
+  vtkSmartPointer<vtkCompositeDataIterator> leaves;
+  leaves.TakeReference(composite->NewIterator());
+  for (leaves->InitTraversal(); !leaves->IsDoneWithTraversal(); leaves->GoToNextItem())
+  {
+    auto* leaf = vtkPointSet::SafeDownCast(leaves->GetCurrentDataObject());
+    if (leaf && leaf->GetNumberOfPoints() > 0)
+    {
+      vtkNew<vtkPolyData> points;
+      points->SetPoints(leaf->GetPoints());
+      points->GetPointData()->ShallowCopy(leaf->GetPointData());
+      append->AddInputData(points);
+    }
+  }
+  if (append->GetNumberOfInputConnections(0) == 0)
+  {
+    return vtkSmartPointer<vtkPolyData>::New();
+  }
+  append->Update();
+  return append->GetOutput();
+}
+}
+
 vtkSmartPointer<vtkMapper> ImposterProxies::SplatShapes(vtkActor* actor)
 {
   auto* mapper = vtkPointGaussianMapper::SafeDownCast(actor->GetMapper());
-  vtkPolyData* input = Input(actor);
+  vtkSmartPointer<vtkPolyData> input = SplatPoints(mapper);
   // Each splat's radius as VTK's splat mapper sizes it: the scale factor, times the scale
   // array's component when one is named, through the scale function when one is set.
   vtkDataArray* scales =
