@@ -114,7 +114,8 @@ void main()
       arriving += vec3(float(!back) * front, float(back) * behind, float(back) * light);
     }
     // The direct volume's alpha says which side of the winding the bounce gathers over and
-    // the voxel's light leaves toward (negative: the back): VTK lights both sides, and a room seen from inside may be wound outward.
+    // the voxel's light leaves toward (negative: the back): VTK lights both sides, and a
+    // room seen from inside may be wound outward.
     // The back counts where the lights reach it unoccluded (not through the faces of a
     // closed object, tested without the grazing allowance) and it opens onto space (two
     // voxels free behind it, not the underside of a thin slab lit through the slab).

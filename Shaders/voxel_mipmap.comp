@@ -27,9 +27,9 @@ layout(rgba16f, binding = 5) uniform writeonly image3D outNegZ;
 const vec3 travel[6] = vec3[6](vec3(1, 0, 0), vec3(-1, 0, 0), vec3(0, 1, 0), vec3(0, -1, 0),
   vec3(0, 0, 1), vec3(0, 0, -1));
 
-// A surface's voxel sends its light to the side it faces (the lit side of the winding): a
-// cone travelling along d sees it when d points into its front, none from behind (a table
-// lit from above does not light the floor under it), half edge on. It still blocks either
+// A surface's voxel sends its light to the side the lights reach: a cone travelling along d
+// sees all of it from the front and edge on, none from behind (a table lit from above does
+// not light the floor under it), over a ramp of 0.5 in the cosine. It still blocks either
 // way. Voxels without a normal (volumes, opposing faces) send it every way, and so does every
 // voxel where no lit side was recorded (no bounces: a room wound outward would go dark).
 vec4 fetchRadiance(int direction, ivec3 c)
