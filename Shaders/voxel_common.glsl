@@ -31,7 +31,10 @@ layout(std430, binding = 9) buffer VoxelEmissionBBuffer { uint voxelEmissionB[];
 layout(std430, binding = 10) buffer VoxelEmissionCoverageBuffer { uint voxelEmissionCoverage[]; };
 #endif
 #ifdef VOXELGI_TRANSLUCENT
-layout(std430, binding = VOXELGI_CLEARNESS_BINDING) buffer VoxelClearnessBuffer { uint voxelClearness[]; };
+layout(std430, binding = VOXELGI_CLEARNESS_BINDING) buffer VoxelClearnessBuffer
+{
+  uint voxelClearness[];
+};
 #endif
 
 #include "voxel_grid.glsl"

@@ -5,7 +5,9 @@
  * are voxelized from their GPU-resident copies; the others are rendered by copies of their VTK mappers (MapperCopies: the user's mappers never
  * switch shader code), with this pass in their render-pass keys so that it injects its code (voxelize.geom, voxelize.frag): every fragment adds its
  * unlit colour, geometric normal and emission to exact integer accumulators (one shader
- * storage buffer per channel), seen through an orthographic camera fitted to the grid cube.
+ * storage buffer per channel; with translucent actors in the scene, one more summing the
+ * fragments' quantized 1 - opacity), seen through an orthographic camera fitted to the grid
+ * cube.
  * A flag volume marks voxels written by static actors: dynamic actors skip them, and the
  * clear (clear_dynamic.comp) keeps them. The resolve (voxel_resolve.comp) turns the sums into
  * the sampled volumes: albedo and normal RGBA8, emission RGBA16F; and lists the occupied

@@ -10,26 +10,15 @@ active, and the image matches the baseline.
 import os
 import sys
 
-from paraview.simple import (AddLight, CreateView, Delete, LoadPlugin, Plane, Render,
-                             SaveScreenshot, Show, Sphere)
+from paraview.simple import LoadPlugin, Plane, Show, Sphere
 
 plugin, baseline, output_dir = [os.path.abspath(a) for a in sys.argv[1:4]]
 os.makedirs(output_dir, exist_ok=True)
 LoadPlugin(plugin, ns=globals())
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Python"))
-from strict_image import mismatch, rgb  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import sunlit_view  # noqa: E402
 
-view = CreateView("VoxelGIRenderView")
-view.ViewSize = [300, 300]
-view.OrientationAxesVisibility = 0
-view.VoxelResolution = 64
-view.UseLight = 0  # no headlight: one scene light above casts the shadows
-light = AddLight(view=view)
-light.Coords = "Scene"
-light.Type = "Directional"
-light.Position = [10, 40, 20]
-light.FocalPoint = [0, 0, 0]
-
+view = sunlit_view.create()
 points = Sphere(Center=[0, 2, 0], Radius=2.5, ThetaResolution=10, PhiResolution=8)
 display = Show(points, view)
 display.SetRepresentationType("Point Gaussian")
@@ -42,42 +31,15 @@ view.CameraFocalPoint = [0, 0, 0]
 view.CameraViewUp = [0, 1, 0]
 
 failures = []
-
-
-def screenshot(name):
-    Render(view)
-    path = os.path.join(output_dir, name)
-    SaveScreenshot(path, view, ImageResolution=[300, 300])
-    return path
-
-
-def mean(path, box):
-    """Mean brightness of the pixels in box (x0, y0, x1, y1; y up, as VTK's rows)."""
-    return rgb(path).reshape(300, 300, 3)[box[1]:box[3], box[0]:box[2]].mean()
-
-
-view.EnableVoxelGI = 0
-plain = screenshot("ParaViewPointGaussian-plain.png")
-view.EnableVoxelGI = 1
-rendered = screenshot("ParaViewPointGaussian.png")
-view.SMProxy.UpdatePropertyInformation()
-if not view.SMProxy.GetProperty("GIActive").GetElement(0):
-    failures.append("GI did not run in the view")
+plain, rendered = sunlit_view.screenshots(view, output_dir, "ParaViewPointGaussian", failures)
 # the floor where the splats' shadow falls, against the open floor (GI adds light there)
 shadow, open_floor = (130, 110, 170, 118), (200, 60, 240, 90)
-ratio = (mean(rendered, shadow) / mean(plain, shadow)) / \
-    (mean(rendered, open_floor) / mean(plain, open_floor))
+ratio = (sunlit_view.mean(rendered, shadow) / sunlit_view.mean(plain, shadow)) / \
+    (sunlit_view.mean(rendered, open_floor) / sunlit_view.mean(plain, open_floor))
 print("floor under the splats with GI: %.2f of plain VTK's, relative to the open floor" % ratio)
 if ratio > 0.8:
     failures.append("the floor under the splats is not darkened: the splats take no part in GI")
 
-problem = mismatch(baseline, rendered, output_dir)
-if problem:
-    failures.append(problem)
-
-# ParaView 5.11's pvpython crashes in sys.exit() while views are alive
-Delete(view)
+status = sunlit_view.finish(view, baseline, rendered, output_dir, failures)
 del view
-for failure in failures:
-    print("FAILED:", failure)
-sys.exit(1 if failures else 0)
+sys.exit(status)

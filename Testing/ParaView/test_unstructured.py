@@ -10,26 +10,15 @@ GI is active, and the image matches the baseline.
 import os
 import sys
 
-from paraview.simple import (AddLight, ColorBy, CreateView, Delete, LoadPlugin, Plane,
-                             Render, SaveScreenshot, Show, Threshold, Wavelet)
+from paraview.simple import ColorBy, LoadPlugin, Plane, Show, Threshold, Wavelet
 
 plugin, baseline, output_dir = [os.path.abspath(a) for a in sys.argv[1:4]]
 os.makedirs(output_dir, exist_ok=True)
 LoadPlugin(plugin, ns=globals())
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Python"))
-from strict_image import mismatch, rgb  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import sunlit_view  # noqa: E402
 
-view = CreateView("VoxelGIRenderView")
-view.ViewSize = [300, 300]
-view.OrientationAxesVisibility = 0
-view.VoxelResolution = 64
-view.UseLight = 0  # no headlight: one scene light above casts the shadows
-light = AddLight(view=view)
-light.Coords = "Scene"
-light.Type = "Directional"
-light.Position = [10, 40, 20]
-light.FocalPoint = [0, 0, 0]
-
+view = sunlit_view.create()
 grid = Threshold(Input=Wavelet(), Scalars=["POINTS", "RTData"])
 grid.LowerThreshold, grid.UpperThreshold = 200.0, 300.0
 display = Show(grid, view)
@@ -47,40 +36,14 @@ if grid_data.GetClassName() != "vtkUnstructuredGrid" or grid_data.GetNumberOfCel
     failures.append("the threshold gave %d cells of a %s" %
                     (grid_data.GetNumberOfCells(), grid_data.GetClassName()))
 
-
-def screenshot(name):
-    Render(view)
-    path = os.path.join(output_dir, name)
-    SaveScreenshot(path, view, ImageResolution=[300, 300])
-    return path
-
-
-def floor_mean(path, box):
-    """Mean brightness of the pixels in box (x0, y0, x1, y1; y up, as VTK's rows)."""
-    return rgb(path).reshape(300, 300, 3)[box[1]:box[3], box[0]:box[2]].mean()
-
-
-view.EnableVoxelGI = 0
-plain = screenshot("ParaViewUnstructured-plain.png")
-view.EnableVoxelGI = 1
-rendered = screenshot("ParaViewUnstructured.png")
-view.SMProxy.UpdatePropertyInformation()
-if not view.SMProxy.GetProperty("GIActive").GetElement(0):
-    failures.append("GI did not run in the view")
+plain, rendered = sunlit_view.screenshots(view, output_dir, "ParaViewUnstructured", failures)
 # the floor under the grid, where its shadow falls
 box = (120, 112, 170, 132)
-darker = 1.0 - floor_mean(rendered, box) / floor_mean(plain, box)
+darker = 1.0 - sunlit_view.mean(rendered, box) / sunlit_view.mean(plain, box)
 print("floor under the grid: %.1f %% darker with GI" % (100.0 * darker))
 if darker < 0.05:
     failures.append("the floor under the grid is not darkened: the grid takes no part in GI")
 
-problem = mismatch(baseline, rendered, output_dir)
-if problem:
-    failures.append(problem)
-
-# ParaView 5.11's pvpython crashes in sys.exit() while views are alive
-Delete(view)
+status = sunlit_view.finish(view, baseline, rendered, output_dir, failures)
 del view
-for failure in failures:
-    print("FAILED:", failure)
-sys.exit(1 if failures else 0)
+sys.exit(status)
