@@ -1,8 +1,10 @@
 """Renders a scene written by export_scene.py with Blender Cycles: the path-traced reference.
 
-    blender -b -P render_cycles.py -- SCENE.json OUT_PREFIX SAMPLES SEED
+    blender -b -P render_cycles.py -- SCENE.json OUT_PREFIX SAMPLES SEED [BOUNCES]
 
 Writes OUT_PREFIX.pfm (linear float RGB, rows bottom to top) and OUT_PREFIX.png (preview).
+BOUNCES (default 8) caps the path's bounces: 0 gives the direct light alone, 1 the direct
+light and one bounce, so the pass can be compared order by order (TestGIReference).
 
 How VTK's model maps to Cycles (VTK shading is Lambert without 1/pi plus an unnormalized
 Blinn-Phong highlight, and its lights do not fall off):
@@ -43,7 +45,9 @@ import sys
 import bpy
 from mathutils import Matrix, Vector
 
-scene_path, prefix, samples, seed = sys.argv[sys.argv.index("--") + 1:][:4]
+args = sys.argv[sys.argv.index("--") + 1:]
+scene_path, prefix, samples, seed = args[:4]
+bounces = int(args[4]) if len(args) > 4 else 8
 with open(scene_path) as f:
     desc = json.load(f)
 
@@ -183,10 +187,10 @@ scene.cycles.samples = int(samples)
 scene.cycles.seed = int(seed)
 scene.cycles.use_adaptive_sampling = False
 scene.cycles.use_denoising = False
-scene.cycles.max_bounces = 8
-scene.cycles.diffuse_bounces = 8
-scene.cycles.glossy_bounces = 8
-scene.cycles.volume_bounces = 8
+scene.cycles.max_bounces = bounces
+scene.cycles.diffuse_bounces = bounces
+scene.cycles.glossy_bounces = bounces
+scene.cycles.volume_bounces = bounces
 scene.cycles.transparent_max_bounces = 8
 scene.cycles.sample_clamp_direct = 0.0
 scene.cycles.sample_clamp_indirect = 0.0

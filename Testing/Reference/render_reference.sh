@@ -5,15 +5,18 @@
 # the samples (RMSE between them / sqrt(2) is the noise of one; a four times larger sample
 # count halves it).
 #
-#   Testing/Reference/render_reference.sh SCENE.json PREFIX [SAMPLES]
+#   Testing/Reference/render_reference.sh SCENE.json PREFIX [SAMPLES] [BOUNCES]
+#
+# BOUNCES (default 8) caps the paths' bounces (render_cycles.py).
 set -euo pipefail
 scene=$1
 prefix=$2
 samples=${3:-4096}
+bounces=${4:-8}
 here=$(cd "$(dirname "$0")" && pwd)
 
 render() { # prefix samples seed
-  blender -b -P "$here/render_cycles.py" -- "$scene" "$1" "$2" "$3" > /dev/null
+  blender -b -P "$here/render_cycles.py" -- "$scene" "$1" "$2" "$3" "$bounces" > /dev/null
 }
 start=$(date +%s)
 render "$prefix" "$samples" 1
