@@ -1,9 +1,9 @@
 // Turns the accumulated sums into the voxel volumes the later stages sample: mean albedo
 // (alpha: the share of light the voxel stops, 1 where only opaque surfaces are; less where
 // translucent ones are, voxel_common.glsl), mean unit normal (zero where the normals cancel
-// out) and the emission of the voxel's covered fraction; and lists the occupied bricks (brick_list.glsl). With
-// VOXELGI_VOLUMES, a voxel no surface reached takes the volumes' colour and partial
-// occupancy (voxelize_volume.comp), no normal.
+// out) and the emission of the voxel's covered fraction; and lists the occupied bricks
+// (brick_list.glsl). With VOXELGI_VOLUMES, a voxel no surface reached takes the volumes'
+// colour and partial occupancy (voxelize_volume.comp), no normal.
 layout(local_size_x = VOXELGI_LOCAL_SIZE, local_size_y = VOXELGI_LOCAL_SIZE, local_size_z = VOXELGI_LOCAL_SIZE) in;
 
 #include "voxel_common.glsl"

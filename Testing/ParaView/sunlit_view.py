@@ -1,16 +1,26 @@
-"""What the ParaView tests of one representation under a scene light share: a 300 x 300 GI
-view lit by one directional scene light above (no headlight), its screenshots with GI off
-and on, the brightness of a box of pixels, and the end of the test.
+"""What the ParaView tests of one representation under a scene light share: their arguments
+and the plugin, a 300 x 300 GI view lit by one directional scene light above (no headlight),
+its screenshots with GI off and on, the brightness of a box of pixels, and the end of the
+test.
 """
 import os
 import sys
 
-from paraview.simple import AddLight, CreateView, Delete, Render, SaveScreenshot
+from paraview.simple import AddLight, CreateView, Delete, LoadPlugin, Render, SaveScreenshot
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Python"))
 from strict_image import mismatch, rgb  # noqa: E402
 
 SIZE = 300
+
+
+def start(argv):
+    """The test's arguments PLUGIN BASELINE OUTPUT_DIR (the output folder made), the plugin
+    loaded, and the view (create()): (view, baseline, output_dir)."""
+    plugin, baseline, output_dir = [os.path.abspath(a) for a in argv[:3]]
+    os.makedirs(output_dir, exist_ok=True)
+    LoadPlugin(plugin, ns=globals())
+    return create(), baseline, output_dir
 
 
 def create():

@@ -10,15 +10,12 @@ active, and the image matches the baseline.
 import os
 import sys
 
-from paraview.simple import LoadPlugin, Plane, Show, Sphere
+from paraview.simple import Plane, Show, Sphere
 
-plugin, baseline, output_dir = [os.path.abspath(a) for a in sys.argv[1:4]]
-os.makedirs(output_dir, exist_ok=True)
-LoadPlugin(plugin, ns=globals())
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import sunlit_view  # noqa: E402
 
-view = sunlit_view.create()
+view, baseline, output_dir = sunlit_view.start(sys.argv[1:4])
 points = Sphere(Center=[0, 2, 0], Radius=2.5, ThetaResolution=10, PhiResolution=8)
 display = Show(points, view)
 display.SetRepresentationType("Point Gaussian")

@@ -10,15 +10,12 @@ GI is active, and the image matches the baseline.
 import os
 import sys
 
-from paraview.simple import ColorBy, LoadPlugin, Plane, Show, Threshold, Wavelet
+from paraview.simple import ColorBy, Plane, Show, Threshold, Wavelet
 
-plugin, baseline, output_dir = [os.path.abspath(a) for a in sys.argv[1:4]]
-os.makedirs(output_dir, exist_ok=True)
-LoadPlugin(plugin, ns=globals())
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import sunlit_view  # noqa: E402
 
-view = sunlit_view.create()
+view, baseline, output_dir = sunlit_view.start(sys.argv[1:4])
 grid = Threshold(Input=Wavelet(), Scalars=["POINTS", "RTData"])
 grid.LowerThreshold, grid.UpperThreshold = 200.0, 300.0
 display = Show(grid, view)
