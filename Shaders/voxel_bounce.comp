@@ -97,7 +97,8 @@ vec3 bounceVoxel(ivec3 v)
   vec3 p = vec3(v) + 0.5;
   vec3 gathered = vec3(0.0);
   float ignored;
-  if (dot(n, n) < 0.25)
+  bool isotropic = dot(n, n) < 0.25;
+  if (isotropic)
   {
     const vec3 axes[6] = vec3[6](vec3(1, 0, 0), vec3(-1, 0, 0), vec3(0, 1, 0), vec3(0, -1, 0),
       vec3(0, 0, 1), vec3(0, 0, -1));
@@ -106,9 +107,6 @@ vec3 bounceVoxel(ivec3 v)
       gathered += voxelConeTrace(p + axes[i], axes[i], coneTanHalf, 1.0, maxDistance, 0.0, p, vec3(0.0), ignored).rgb;
     }
     gathered /= 6.0;
-#ifdef VOXELGI_VOLUMES
-    imageStore(incidentOut, v, vec4(gathered, 0.0));
-#endif
   }
   else
   {
@@ -125,13 +123,24 @@ vec3 bounceVoxel(ivec3 v)
     gathered /= float(coneCount);
   }
   // premultiplied by the occupancy (light_voxels.comp)
-  vec3 radiance = direct.rgb + albedo.a * albedo.rgb * gathered;
+  vec3 reflectance = albedo.a * albedo.rgb;
+  vec3 radiance = direct.rgb + reflectance * gathered;
   vec3 increment = radiance - imageLoad(radianceOut, v).rgb;
   if (bounceTail)
   {
+    vec3 tail = increment * tailFactor();
     // never below the direct light: a relight that continues a brighter solution decreases
-    radiance = max(radiance + increment * tailFactor(), direct.rgb);
+    radiance = max(radiance + tail, direct.rgb);
+    // The light arriving continues its series as the radiance it makes does: the tail is
+    // reflectance x the incident light's own (bounded where the reflectance is near zero).
+    gathered = max(gathered + tail / max(reflectance, vec3(1e-3)), vec3(0.0));
   }
+#ifdef VOXELGI_VOLUMES
+  if (isotropic)
+  {
+    imageStore(incidentOut, v, vec4(gathered, 0.0));
+  }
+#endif
   imageStore(radianceOut, v, vec4(min(radiance, vec3(VOXELGI_HALF_MAX)), albedo.a));
   return increment;
 }

@@ -1,6 +1,7 @@
 #include "vtkVoxelGISceneFile.h"
 
 #include "vtkVoxelGIPass.h"
+#include "vtkVoxelGIScenes.h"
 
 #include "vtkAbstractVolumeMapper.h"
 #include "vtkActor.h"
@@ -23,7 +24,6 @@
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
-#include "vtkOpenGLGPUVolumeRayCastMapper.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -321,11 +321,10 @@ Json::Value Material(vtkActor* actor, bool colored, const std::string& normals)
   return m;
 }
 
-// The light as a scene light for the current camera, or a problem.
 /// A homogeneous volume (constant opacity and colour over its scalars) as Cycles' extinction:
 /// VTK's opacity alpha per unit distance u is the density -ln(1 - alpha) / u per world unit.
 /// Empty with `problem` when the volume is anything else.
-Json::Value HomogeneousVolume(vtkVolume* volume, std::string& problem, std::string& note)
+Json::Value HomogeneousVolume(vtkVolume* volume, std::string& problem)
 {
   vtkAbstractVolumeMapper* mapper = volume->GetMapper();
   auto* image = mapper ? vtkImageData::SafeDownCast(mapper->GetDataSetInput()) : nullptr;
@@ -375,11 +374,6 @@ Json::Value HomogeneousVolume(vtkVolume* volume, std::string& problem, std::stri
     problem = "opacity 0 or 1 per unit distance (no finite density)";
     return Json::Value();
   }
-  if (rgb[0] > 0.0 || rgb[1] > 0.0 || rgb[2] > 0.0)
-  {
-    note = "a volume's colour: VTK shows it unlit (emission-absorption), Cycles scatters light "
-           "with it; only black volumes look alike";
-  }
   Json::Value v;
   v["bounds"] = ToJson(image->GetBounds(), 6);
   Json::Value matrix(Json::arrayValue);
@@ -393,6 +387,7 @@ Json::Value HomogeneousVolume(vtkVolume* volume, std::string& problem, std::stri
   return v;
 }
 
+// The light as a scene light for the current camera, or a problem.
 Json::Value Light(vtkLight* light, vtkCamera* camera, std::string& problem, std::string& note)
 {
   Json::Value l;
@@ -616,8 +611,8 @@ bool vtkVoxelGISceneFile::Write(vtkRenderer* renderer)
     }
     if (auto* volume = vtkVolume::SafeDownCast(prop))
     {
-      std::string why, volumeNote;
-      Json::Value v = HomogeneousVolume(volume, why, volumeNote);
+      std::string why;
+      Json::Value v = HomogeneousVolume(volume, why);
       if (!why.empty())
       {
         problem(what, why);
@@ -625,10 +620,6 @@ bool vtkVoxelGISceneFile::Write(vtkRenderer* renderer)
       else
       {
         volumes.append(v);
-      }
-      if (!volumeNote.empty())
-      {
-        note(volumeNote);
       }
       continue;
     }
@@ -1056,26 +1047,9 @@ vtkSmartPointer<vtkVolume> HomogeneousVolume(const Json::Value& v, const std::st
   {
     throw Damaged(where + ": no positive density or empty bounds");
   }
-  vtkNew<vtkImageData> image;
-  image->SetDimensions(2, 2, 2);
-  image->SetOrigin(b[0], b[2], b[4]);
-  image->SetSpacing(b[1] - b[0], b[3] - b[2], b[5] - b[4]);
-  image->AllocateScalars(VTK_FLOAT, 1);
-  static_cast<vtkFloatArray*>(image->GetPointData()->GetScalars())->FillValue(1.f);
-  vtkNew<vtkPiecewiseFunction> opacity;
-  opacity->AddPoint(0.0, 1.0 - std::exp(-density));
-  opacity->AddPoint(2.0, 1.0 - std::exp(-density));
-  vtkNew<vtkColorTransferFunction> colors;
-  colors->AddRGBPoint(0.0, color[0], color[1], color[2]);
-  colors->AddRGBPoint(2.0, color[0], color[1], color[2]);
-  vtkNew<vtkOpenGLGPUVolumeRayCastMapper> mapper;
-  mapper->SetInputData(image);
-  auto volume = vtkSmartPointer<vtkVolume>::New();
-  volume->SetMapper(mapper);
-  volume->GetProperty()->SetScalarOpacity(opacity);
-  volume->GetProperty()->SetColor(colors);
-  volume->GetProperty()->SetScalarOpacityUnitDistance(1.0);
-  volume->GetProperty()->SetInterpolationTypeToLinear();
+  const double rgb[3] = { color[0], color[1], color[2] };
+  vtkSmartPointer<vtkVolume> volume =
+    vtkVoxelGIScenes::MakeHomogeneousVolume(b, 1.0 - std::exp(-density), rgb);
   vtkNew<vtkMatrix4x4> user;
   user->DeepCopy(m);
   volume->SetUserMatrix(user);

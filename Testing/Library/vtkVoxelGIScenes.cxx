@@ -42,6 +42,7 @@
 #include "vtkVolumeCollection.h"
 #include "vtkVolumeProperty.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
@@ -107,6 +108,16 @@ void MakeEmitter(vtkActor* actor, const Vec3& emission)
   actor->GetProperty()->SetDiffuse(0.0);
   actor->GetProperty()->SetAmbientColor(emission[0], emission[1], emission[2]);
   vtkVoxelGIPass::SetPropEmission(actor, emission[0], emission[1], emission[2]);
+}
+
+vtkVolume* AddHomogeneousVolume(
+  vtkRenderer* renderer, const Vec3& lo, const Vec3& hi, double alpha, const Vec3& color)
+{
+  const double bounds[6] = { lo[0], hi[0], lo[1], hi[1], lo[2], hi[2] };
+  vtkSmartPointer<vtkVolume> volume =
+    vtkVoxelGIScenes::MakeHomogeneousVolume(bounds, alpha, color.data());
+  renderer->AddVolume(volume);
+  return volume;
 }
 
 // A point light of VTK's default attenuation (none) at `position`; the renderer owns it.
@@ -190,6 +201,43 @@ void AimCamera(
   camera->SetViewAngle(viewAngle);
   renderer->ResetCameraClippingRange();
 }
+}
+
+vtkSmartPointer<vtkVolume> vtkVoxelGIScenes::MakeHomogeneousVolume(
+  const double bounds[6], double alpha, const double color[3])
+{
+  // Points at most 0.1 apart (up to 257 a side): VTK's ray caster gives a ray that leaves a
+  // two-point image through its side the opacity of one crossing its whole depth.
+  int dimensions[3];
+  double spacing[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    const double extent = bounds[2 * i + 1] - bounds[2 * i];
+    dimensions[i] = 1 + static_cast<int>(std::min(256.0, std::max(1.0, std::ceil(extent / 0.1))));
+    spacing[i] = extent / (dimensions[i] - 1);
+  }
+  vtkNew<vtkImageData> box;
+  box->SetDimensions(dimensions);
+  box->SetOrigin(bounds[0], bounds[2], bounds[4]);
+  box->SetSpacing(spacing);
+  box->AllocateScalars(VTK_FLOAT, 1);
+  static_cast<vtkFloatArray*>(box->GetPointData()->GetScalars())->FillValue(1.f);
+  vtkNew<vtkPiecewiseFunction> opacity;
+  opacity->AddPoint(0.0, alpha);
+  opacity->AddPoint(2.0, alpha);
+  vtkNew<vtkColorTransferFunction> colors;
+  colors->AddRGBPoint(0.0, color[0], color[1], color[2]);
+  colors->AddRGBPoint(2.0, color[0], color[1], color[2]);
+  // The OpenGL ray caster itself: no object factory needed to make it.
+  vtkNew<vtkOpenGLGPUVolumeRayCastMapper> mapper;
+  mapper->SetInputData(box);
+  auto volume = vtkSmartPointer<vtkVolume>::New();
+  volume->SetMapper(mapper);
+  volume->GetProperty()->SetScalarOpacity(opacity);
+  volume->GetProperty()->SetColor(colors);
+  volume->GetProperty()->SetScalarOpacityUnitDistance(1.0);
+  volume->GetProperty()->SetInterpolationTypeToLinear();
+  return volume;
 }
 
 vtkActor* vtkVoxelGIScenes::AddSource(
@@ -458,29 +506,8 @@ void vtkVoxelGIScenes::AddVolumeSlab(vtkRenderer* renderer)
     actor->GetProperty()->SetAmbient(sky);
   }
 
-  // The slab: constant scalars through constant transfer functions, opacity 0.6 per unit.
-  vtkNew<vtkImageData> slab;
-  slab->SetDimensions(2, 2, 2);
-  slab->SetOrigin(-4.0, 3.5, -3.0);
-  slab->SetSpacing(8.0, 1.0, 6.0);
-  slab->AllocateScalars(VTK_FLOAT, 1);
-  static_cast<vtkFloatArray*>(slab->GetPointData()->GetScalars())->FillValue(1.f);
-  vtkNew<vtkPiecewiseFunction> opacity;
-  opacity->AddPoint(0.0, 0.6);
-  opacity->AddPoint(2.0, 0.6);
-  vtkNew<vtkColorTransferFunction> black;
-  black->AddRGBPoint(0.0, 0.0, 0.0, 0.0);
-  black->AddRGBPoint(2.0, 0.0, 0.0, 0.0);
-  // The OpenGL ray caster itself: no object factory needed to make it.
-  vtkNew<vtkOpenGLGPUVolumeRayCastMapper> mapper;
-  mapper->SetInputData(slab);
-  vtkNew<vtkVolume> volume;
-  volume->SetMapper(mapper);
-  volume->GetProperty()->SetScalarOpacity(opacity);
-  volume->GetProperty()->SetColor(black);
-  volume->GetProperty()->SetScalarOpacityUnitDistance(1.0);
-  volume->GetProperty()->SetInterpolationTypeToLinear();
-  renderer->AddVolume(volume);
+  // The slab: black, opacity 0.6 per unit.
+  AddHomogeneousVolume(renderer, { -4.0, 3.5, -3.0 }, { 4.0, 4.5, 3.0 }, 0.6, { 0, 0, 0 });
 
   vtkNew<vtkLight> sun;
   sun->SetLightTypeToSceneLight();
@@ -543,6 +570,25 @@ void vtkVoxelGIScenes::AddEmitterRoom(vtkRenderer* renderer)
   AddBlock(renderer, 1.2, 1.5, 1.0, 1.4, 1.0, -15.0, white);
   AddSphere(renderer, { 3.6, 0.6, 2.5 }, 0.6, { 0.75, 0.6, 0.4 });
   AimCamera(renderer, { 2.5, 1.6, 5.9 }, { 2.5, 1.0, 0.0 }, 60.0);
+}
+
+void vtkVoxelGIScenes::AddVolumeRoom(vtkRenderer* renderer)
+{
+  if (!renderer)
+  {
+    return;
+  }
+  // Closed and white; no vtkLight: a ceiling panel's emission is the only light, so the
+  // orange volume shows, over the colour VTK gives it unlit, the room's light it scatters.
+  const Vec3 white{ { 0.75, 0.75, 0.75 } };
+  AddClosedRoom(renderer, { 0, 0, 0 }, { 5, 4, 5 }, white, white, white, white);
+  MakeEmitter(AddQuad(renderer, { 1.5, 3.99, 1.5 }, { 3.5, 3.99, 1.5 }, { 1.5, 3.99, 3.5 },
+                { 1.0, 1.0, 1.0 }),
+    { 5.0, 5.0, 5.0 });
+  AddHomogeneousVolume(renderer, { 0.9, 0.7, 1.2 }, { 3.1, 2.3, 3.0 }, 0.5, { 0.9, 0.55, 0.25 });
+  AddSphere(renderer, { 4.0, 0.6, 1.5 }, 0.6, white);
+  renderer->AutomaticLightCreationOff();
+  AimCamera(renderer, { 2.5, 2.6, 4.9 }, { 2.3, 1.0, 0.0 }, 60.0);
 }
 
 void vtkVoxelGIScenes::AddContacts(vtkRenderer* renderer, bool headlight)
@@ -655,6 +701,10 @@ bool vtkVoxelGIScenes::AddScene(vtkRenderer* renderer, const char* name)
   else if (!std::strcmp(name, "emitterroom"))
   {
     AddEmitterRoom(renderer);
+  }
+  else if (!std::strcmp(name, "volumeroom"))
+  {
+    AddVolumeRoom(renderer);
   }
   else if (!std::strcmp(name, "contacts"))
   {

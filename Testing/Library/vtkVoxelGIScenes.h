@@ -22,11 +22,13 @@
 #define vtkVoxelGIScenes_h
 
 #include "vtkObject.h"
+#include "vtkSmartPointer.h"          // for vtkSmartPointer
 #include "vtkTestingVoxelGIModule.h" // for export macro
 
 class vtkActor;
 class vtkAlgorithm;
 class vtkRenderer;
+class vtkVolume;
 
 class VTKTESTINGVOXELGI_EXPORT vtkVoxelGIScenes : public vtkObject
 {
@@ -69,6 +71,12 @@ public:
    */
   static void AddEmitterRoom(vtkRenderer* renderer);
   /**
+   * An orange homogeneous volume (opacity 0.5 per unit length, unshaded) floating in a closed
+   * white room lit only by an emissive ceiling panel ("volumeroom"): the volume shows the
+   * room's light it scatters, shades the floor and bleeds its colour.
+   */
+  static void AddVolumeRoom(vtkRenderer* renderer);
+  /**
    * Contacts: a floor against a wall with a finned heat sink, three touching spheres, a
    * column against the wall and a block, under a point light ("contacts") or VTK's
    * headlight ("contactsheadlight"). Seams, fins and touching points must darken.
@@ -83,7 +91,7 @@ public:
 
   /**
    * Add the scene called `name`: "cornell", "glossy", "isosurface", "glyphs", "emissive",
-   * "streamlines", "volume", "pointroom", "lamproom", "emitterroom", "contacts",
+   * "streamlines", "volume", "pointroom", "lamproom", "emitterroom", "volumeroom", "contacts",
    * "contactsheadlight" or "translucent". Returns false (and adds nothing) for another name.
    */
   static bool AddScene(vtkRenderer* renderer, const char* name);
@@ -101,6 +109,13 @@ public:
    */
   static vtkActor* AddSource(vtkRenderer* renderer, vtkAlgorithm* source, double r, double g,
     double b);
+
+  /**
+   * A homogeneous volume over `bounds`: constant scalars through constant transfer functions
+   * of opacity `alpha` per unit distance and colour `color`, GPU ray cast unshaded.
+   */
+  static vtkSmartPointer<vtkVolume> MakeHomogeneousVolume(
+    const double bounds[6], double alpha, const double color[3]);
 
 protected:
   vtkVoxelGIScenes() = default;

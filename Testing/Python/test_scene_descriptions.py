@@ -29,7 +29,7 @@ def numbers_close(a, b):
 
 failures = []
 for scene in ("cornell", "glossy", "isosurface", "glyphs", "emissive", "streamlines", "volume",
-              "pointroom", "lamproom", "emitterroom", "contacts", "contactsheadlight",
+              "pointroom", "lamproom", "emitterroom", "volumeroom", "contacts", "contactsheadlight",
               "translucent"):
     prefix = os.path.join(tmp, scene)
     subprocess.run([sys.executable, export, scene, prefix], check=True)

@@ -30,8 +30,10 @@ Blinn-Phong highlight, and its lights do not fall off):
   of its bounds with no surface and a volume of extinction density -ln(1 - alpha) / u per
   world unit: Volume Scatter (colour c) plus Volume Absorption (colour c), both of that
   density, so that c of the extinction scatters and 1 - c is absorbed (the transmittance VTK's
-  compositing gives a ray, exp(-density x length)). VTK shows a volume's colour unlit, so only
-  black volumes look alike in both;
+  compositing gives a ray, exp(-density x length)). VTK shows an unshaded volume's colour
+  unlit, as if lit by radiance 1: c (1 - T) over a ray of transmittance T. That is a Volume
+  Emission of colour c and strength equal to the density, seen by camera rays only (it
+  lights nothing, as in VTK); the light the volume scatters comes on top, as the pass adds it;
 - the renderer's background -> uniform world of that radiance. VTK's ambient term stands for
   that sky: export_scene.py accepts only Ka Ca = background x diffuse colour, which is what the
   unoccluded sky reflects (the world lights the scene in Cycles, occluded and bounced).
@@ -135,7 +137,18 @@ for i, volume in enumerate(desc.get("volumes", [])):
     both = nodes.new("ShaderNodeAddShader")
     links.new(scatter.outputs[0], both.inputs[0])
     links.new(absorb.outputs[0], both.inputs[1])
-    links.new(both.outputs[0], output.inputs["Volume"])
+    # VTK's unlit colour, for camera rays only: emission 0 elsewhere.
+    emission = nodes.new("ShaderNodeEmission")
+    emission.inputs["Color"].default_value = (*volume["color"], 1.0)
+    emission.inputs["Strength"].default_value = volume["density"]
+    path = nodes.new("ShaderNodeLightPath")
+    camera = nodes.new("ShaderNodeMixShader")
+    links.new(path.outputs["Is Camera Ray"], camera.inputs["Fac"])
+    links.new(emission.outputs[0], camera.inputs[2])
+    shown = nodes.new("ShaderNodeAddShader")
+    links.new(both.outputs[0], shown.inputs[0])
+    links.new(camera.outputs[0], shown.inputs[1])
+    links.new(shown.outputs[0], output.inputs["Volume"])
     box.data.materials.append(material)
 
 for i, light in enumerate(desc["lights"]):
