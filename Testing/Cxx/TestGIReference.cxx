@@ -248,6 +248,29 @@ bool ReadReference(const std::string& name, voxelgi::metrics::Image& image)
   return true;
 }
 
+// A built-in scene in a window of a reference's size, the pass at its defaults.
+struct SceneWindow
+{
+  SceneWindow(const std::string& scene, int width, int height)
+    : Added(vtkVoxelGIScenes::AddScene(this->Renderer, scene.c_str()))
+    , View(this->Renderer, 0)
+  {
+    this->View.Window->SetSize(width, height);
+  }
+  /// Render and copy the pass's composite: false where GI did not run or left non-finite
+  /// values.
+  bool Composite(vtkFloatArray* pixels)
+  {
+    this->View.Window->Render();
+    return this->View.GI->GetGIActive() &&
+      this->View.GI->GetFloatImage(vtkVoxelGIPass::IMAGE_COMPOSITE, pixels) &&
+      voxelgi_test::AllFinite(this->View.GI);
+  }
+  vtkNew<vtkRenderer> Renderer;
+  bool Added;
+  voxelgi_test::GIWindow View;
+};
+
 // The share of the first bounce asserted today per scene with order references (goal 0.95).
 const std::map<std::string, double>& FirstBounceBounds()
 {
@@ -269,26 +292,19 @@ int Orders(const std::string& scene)
   voxelgi::metrics::Image direct, first;
   VOXELGI_CHECK(ReadReference(scene + "-b0", direct) && ReadReference(scene + "-b1", first),
     "no order references");
-  const int w = direct.Width, h = direct.Height;
-  vtkNew<vtkRenderer> renderer;
-  VOXELGI_CHECK(vtkVoxelGIScenes::AddScene(renderer, scene.c_str()), "no scene " << scene);
-  voxelgi_test::GIWindow view(renderer, 0);
-  view.Window->SetSize(w, h);
-  vtkVoxelGIPass* gi = view.GI;
+  SceneWindow window(scene, direct.Width, direct.Height);
+  VOXELGI_CHECK(window.Added, "no scene " << scene);
+  vtkVoxelGIPass* gi = window.View.GI;
   gi->SetIndirectIntensity(0.0);
   gi->SetSpecularCone(false);
   vtkNew<vtkFloatArray> pixels;
-  view.Window->Render();
-  VOXELGI_CHECK(gi->GetGIActive() && gi->GetFloatImage(vtkVoxelGIPass::IMAGE_COMPOSITE, pixels),
-    "GI did not run");
+  VOXELGI_CHECK(window.Composite(pixels), "GI did not run");
   const double directMean = Measure(pixels, direct, "direct light alone").Mean;
   gi->SetIndirectIntensity(1.0);
   gi->SetSpecularCone(true);
   gi->SetBounces(0);
   gi->SetBounceTail(false);
-  view.Window->Render();
-  VOXELGI_CHECK(gi->GetFloatImage(vtkVoxelGIPass::IMAGE_COMPOSITE, pixels), "no image");
-  VOXELGI_CHECK(voxelgi_test::AllFinite(gi), "non-finite values");
+  VOXELGI_CHECK(window.Composite(pixels), "GI did not run");
   const double firstMean = Measure(pixels, first, "direct light and the first bounce").Mean;
   const double share = (firstMean - directMean) / (MeanOf(first) - MeanOf(direct));
   std::cout << scene << ": direct light " << directMean / MeanOf(direct)
@@ -300,7 +316,6 @@ int Orders(const std::string& scene)
       ok
     ? EXIT_SUCCESS
     : EXIT_FAILURE;
-}
 }
 
 // The share of the emitters' light the pass's own gather gives, asserted today per scene lit
@@ -321,21 +336,14 @@ int EmitterGather(const std::string& scene)
 {
   voxelgi::metrics::Image direct;
   VOXELGI_CHECK(ReadReference(scene + "-b0", direct), "no 0-bounce reference");
-  const int w = direct.Width, h = direct.Height;
-  vtkNew<vtkRenderer> renderer;
-  VOXELGI_CHECK(vtkVoxelGIScenes::AddScene(renderer, scene.c_str()), "no scene " << scene);
-  voxelgi_test::GIWindow view(renderer, 0);
-  view.Window->SetSize(w, h);
-  vtkVoxelGIPass* gi = view.GI;
-  gi->SetBounces(0);
-  gi->SetBounceTail(false);
+  SceneWindow window(scene, direct.Width, direct.Height);
+  VOXELGI_CHECK(window.Added, "no scene " << scene);
+  window.View.GI->SetBounces(0);
+  window.View.GI->SetBounceTail(false);
   vtkNew<vtkFloatArray> pixels;
-  view.Window->Render();
-  VOXELGI_CHECK(gi->GetGIActive() && gi->GetFloatImage(vtkVoxelGIPass::IMAGE_COMPOSITE, pixels),
-    "GI did not run");
-  VOXELGI_CHECK(voxelgi_test::AllFinite(gi), "non-finite values");
+  VOXELGI_CHECK(window.Composite(pixels), "GI did not run");
   const voxelgi::metrics::Image image =
-    voxelgi::metrics::FromRgba(pixels->GetPointer(0), w, h);
+    voxelgi::metrics::FromRgba(pixels->GetPointer(0), direct.Width, direct.Height);
   const float brightest = *std::max_element(direct.Rgb.begin(), direct.Rgb.end());
   double pass = 0.0, cycles = 0.0;
   int kept = 0;
@@ -356,6 +364,7 @@ int EmitterGather(const std::string& scene)
            EmitterGatherBounds().at(scene))
     ? EXIT_SUCCESS
     : EXIT_FAILURE;
+}
 }
 
 int TestGIReference(int argc, char* argv[])
