@@ -126,19 +126,20 @@ vec3 bounceVoxel(ivec3 v)
   vec3 reflectance = albedo.a * albedo.rgb;
   vec3 radiance = direct.rgb + reflectance * gathered;
   vec3 increment = radiance - imageLoad(radianceOut, v).rgb;
+  vec3 tail = vec3(0.0);
   if (bounceTail)
   {
-    vec3 tail = increment * tailFactor();
+    tail = increment * tailFactor();
     // never below the direct light: a relight that continues a brighter solution decreases
     radiance = max(radiance + tail, direct.rgb);
-    // The light arriving continues its series as the radiance it makes does: the tail is
-    // reflectance x the incident light's own (bounded where the reflectance is near zero).
-    gathered = max(gathered + tail / max(reflectance, vec3(1e-3)), vec3(0.0));
   }
 #ifdef VOXELGI_VOLUMES
   if (isotropic)
   {
-    imageStore(incidentOut, v, vec4(gathered, 0.0));
+    // The light arriving continues its series as the radiance it makes does: the tail is
+    // reflectance x the incident light's own (bounded where the reflectance is near zero).
+    vec3 incident = max(gathered + tail / max(reflectance, vec3(1e-3)), vec3(0.0));
+    imageStore(incidentOut, v, vec4(incident, 0.0));
   }
 #endif
   imageStore(radianceOut, v, vec4(min(radiance, vec3(VOXELGI_HALF_MAX)), albedo.a));

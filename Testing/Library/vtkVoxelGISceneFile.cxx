@@ -1047,9 +1047,8 @@ vtkSmartPointer<vtkVolume> HomogeneousVolume(const Json::Value& v, const std::st
   {
     throw Damaged(where + ": no positive density or empty bounds");
   }
-  const double rgb[3] = { color[0], color[1], color[2] };
   vtkSmartPointer<vtkVolume> volume =
-    vtkVoxelGIScenes::MakeHomogeneousVolume(b, 1.0 - std::exp(-density), rgb);
+    vtkVoxelGIScenes::MakeHomogeneousVolume(b, 1.0 - std::exp(-density), color.data());
   vtkNew<vtkMatrix4x4> user;
   user->DeepCopy(m);
   volume->SetUserMatrix(user);

@@ -110,6 +110,7 @@ void MakeEmitter(vtkActor* actor, const Vec3& emission)
   vtkVoxelGIPass::SetPropEmission(actor, emission[0], emission[1], emission[2]);
 }
 
+// MakeHomogeneousVolume over the box [lo, hi], added to `renderer` (which owns it).
 vtkVolume* AddHomogeneousVolume(
   vtkRenderer* renderer, const Vec3& lo, const Vec3& hi, double alpha, const Vec3& color)
 {

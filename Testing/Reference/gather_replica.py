@@ -104,7 +104,8 @@ class Gather:
 
     def at(self, p, n, count=16):
         s = 1.0 if n[2] >= 0.0 else -1.0
-        a, c = -1.0 / (s + n[2]), n[0] * n[1] * (-1.0 / (s + n[2]))
+        a = -1.0 / (s + n[2])
+        c = n[0] * n[1] * a
         t0 = np.array([1.0 + s * n[0] * n[0] * a, s * c, -s * n[0]])
         b0 = np.array([c, s + n[1] * n[1] * a, -n[1]])
         golden, total = np.pi * (3.0 - np.sqrt(5.0)), np.zeros(3)
