@@ -147,6 +147,7 @@ vec4 voxelConeTrace(vec3 origin, vec3 dir, float tanHalf, float start, float max
   tExit = min(exits.x, min(exits.y, exits.z));
   float tEnd = min(maxDistance, tExit);
   bool last = false;
+  float arrived = -1.0; // the step that led to this sample, in voxels
   for (int i = 0; i < 512 && !last && acc.a < 0.99; ++i)
   {
     if (t >= tEnd)
@@ -180,18 +181,22 @@ vec4 voxelConeTrace(vec3 origin, vec3 dir, float tanHalf, float start, float max
     }
     // (one call site: the sampler selection inside is large, and so is its compiled code)
     vec4 s = voxelSampleCone(p, diameter, readDir);
-    // Opacity correction for steps shorter or longer than the sample's extent. At the
+    // Opacity correction for steps shorter or longer than the sample's extent, by the step
+    // that led here: where the footprint grew, corrected for its own diameter the sample
+    // would count again the span its predecessor covered (a compact emitter twice). At the
     // scene's bounds the last sample's opacity is the share of the footprint blocked up to
     // the face, which the earlier samples' filters have partly seen already: it raises the
     // cone's opacity to its own, never adds to it (an emitter at the face would count twice).
-    float a = !last ? 1.0 - pow(clamp(1.0 - s.a, 0.0, 1.0), stepFactor)
+    float exponent = arrived < 0.0 ? stepFactor : min(arrived / diameter, stepFactor);
+    float a = !last ? 1.0 - pow(clamp(1.0 - s.a, 0.0, 1.0), exponent)
                     : (sceneFace ? clamp((s.a - acc.a) / max(1.0 - acc.a, 1e-4), 0.0, 1.0)
                                  : clamp(s.a, 0.0, 1.0));
     vec3 c = s.a > 1e-4 ? s.rgb * (a / s.a) : vec3(0.0);
     acc.rgb += (1.0 - acc.a) * c;
     acc.a += (1.0 - acc.a) * a;
     occlusion += (1.0 - occlusion) * a / (1.0 + aoFalloff * t);
-    t += diameter * stepFactor;
+    arrived = diameter * stepFactor;
+    t += arrived;
   }
   return acc;
 }

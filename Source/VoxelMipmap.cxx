@@ -33,6 +33,7 @@ int MipLevels(int resolution)
 std::size_t VoxelMipmap::RequiredBytes(int resolution, const Settings& settings)
 {
   const int half = std::max(resolution / 2, 1);
+  // (with media, the medium volume adds a twelfth of that)
   return settings.AnisotropicMipmaps ? 6 * Volume3D::StorageBytes(GL_RGBA16F, half, MipLevels(half))
                                      : 0;
 }
@@ -48,6 +49,7 @@ bool VoxelMipmap::Prepare(const Frame& frame, std::string& error)
     {
       volume.Release();
     }
+    this->Medium.Release();
     return true;
   }
   const int half = std::max(resolution / 2, 1);
@@ -58,6 +60,15 @@ bool VoxelMipmap::Prepare(const Frame& frame, std::string& error)
       error = "could not allocate the directional (anisotropic) volumes";
       return false;
     }
+  }
+  if (!this->Voxels.HasMedia())
+  {
+    this->Medium.Release();
+  }
+  else if (!this->Medium.Allocate(GL_RG8, half, MipLevels(half)))
+  {
+    error = "could not allocate the directional volumes' medium shares";
+    return false;
   }
   return this->Program.BuildOnce(shaders::voxel_mipmap_comp, "anisotropic mipmap", error);
 }
@@ -86,6 +97,8 @@ void VoxelMipmap::Build(vtkOpenGLRenderWindow* renWin)
   {
     units[d] = samplers.Add(this->Directional[d]);
   }
+  const bool media = this->Medium.IsAllocated();
+  const int mediumUnit = samplers.Add(media ? this->Medium : this->Directional[0]);
   if (!samplers.Complete())
   {
     return;
@@ -95,6 +108,8 @@ void VoxelMipmap::Build(vtkOpenGLRenderWindow* renWin)
   this->Program.SetInt("voxelNormal", normalUnit);
   this->Program.SetInt("voxelDirect", directUnit);
   this->Program.SetInt("litSides", direct.IsAllocated() ? 1 : 0);
+  this->Program.SetInt("media", media ? 1 : 0);
+  this->Program.SetInt("voxelMedium", mediumUnit);
   for (int d = 0; d < 6; ++d)
   {
     this->Program.SetInt(SourceNames[d], units[d]);
@@ -106,6 +121,10 @@ void VoxelMipmap::Build(vtkOpenGLRenderWindow* renWin)
     for (int d = 0; d < 6; ++d)
     {
       this->Directional[d].BindImage(static_cast<unsigned int>(d), GL_WRITE_ONLY, level);
+    }
+    if (media)
+    {
+      this->Medium.BindImage(6, GL_WRITE_ONLY, level);
     }
     this->Program.Use(renWin);
     this->Program.SetInt("sourceIsRadiance", level == 0 ? 1 : 0);
@@ -123,7 +142,7 @@ std::size_t VoxelMipmap::MemoryBytes() const
   {
     bytes += volume.Bytes();
   }
-  return bytes;
+  return bytes + this->Medium.Bytes();
 }
 
 void VoxelMipmap::ReleaseGraphicsResources(vtkWindow*)
@@ -132,6 +151,7 @@ void VoxelMipmap::ReleaseGraphicsResources(vtkWindow*)
   {
     volume.Release();
   }
+  this->Medium.Release();
   this->Program.Release();
 }
 

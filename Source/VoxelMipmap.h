@@ -43,6 +43,9 @@ public:
 
   /// Directions a cone travels: +x, -x, +y, -y, +z, -z.
   std::array<Volume3D, 6> Directional;
+  /// Mean occupancy of partial (r) and full (g) voxels at the directional levels, with which
+  /// the build tells a medium from surfaces' coverage; only in scenes with media.
+  Volume3D Medium;
   std::size_t MemoryBytes() const;
   void ReleaseGraphicsResources(vtkWindow* window);
 

@@ -61,6 +61,8 @@ public:
 
   int GetResolution() const { return this->Resolution; }
   bool HasEmission() const { return this->Emission; }
+  /// Whether voxels of partial occupancy may be present (translucent surfaces, volumes).
+  bool HasMedia() const { return this->Translucent || this->Volumes.GetGrid() != nullptr; }
   bool GetHardwareConservative() const { return this->HardwareConservative; }
   std::size_t MemoryBytes() const;
   /// The part of MemoryBytes() that only emissive scenes need.

@@ -1,6 +1,6 @@
 """The numpy replica of the pixels' gather (Testing/Reference/gather_replica.py) still traces
 what the shaders trace: on the small emitter's room's floor (albedo 0.6), with `Bounces` 0,
-its gather times the albedo is the pass's indirect light within 10 % (measured 6 %), and a
+its gather times the albedo is the pass's indirect light within 10 % (measured 0.90), and a
 point off the image gives no pixel to compare.
 
     python3 test_gather_replica.py Testing/Reference/gather_replica.py

@@ -2,7 +2,7 @@
 voxels hold (docs/reference.md, "Where a compact source is counted twice"):
 
     PYTHONPATH=build/lib/python3/dist-packages xvfb-run -a /usr/bin/python3 \\
-        Testing/Reference/gather_replica.py SCENE X Y Z NX NY NZ [correlated] [arrival]
+        Testing/Reference/gather_replica.py SCENE X Y Z NX NY NZ [independent] [own-step]
 
 renders the built-in SCENE (vtkVoxelGIScenes) with `Bounces` 0 and no tail, reads the pass's
 radiance volume back, and gathers at the world point (X, Y, Z) with unit normal (NX, NY, NZ)
@@ -10,10 +10,12 @@ as the pass does: the six directional mipmaps built as voxel_mipmap.comp builds 
 side of each voxel left out: every voxel sends its light every way) and sixteen cones turned
 four ways traced as cone_tracing.glsl traces them, without the read at the scene's bounds. It
 prints the replica's gather beside the pass's own at that pixel (its composite over the
-albedo), so that a replica that no longer matches the shaders shows at once. `correlated`
-composites the mip levels above the first as layers covering the same columns; `arrival`
-corrects a sample's opacity for the step it arrived by. Both change what the replica traces,
-not the pass.
+albedo), so that a replica that no longer matches the shaders shows at once. The mipmaps are
+built for surfaces alone (a medium's independent share is left out), over the columns inside
+the scene's bounds (taken as the occupied voxels' bounds). `independent` composites the mip
+levels above the first as independent layers; `own-step` corrects a sample's opacity for its
+own diameter's step instead of the step it arrived by: what the pass did before the small
+emitter's excess was found. Both change what the replica traces, not the pass.
 """
 import sys
 
@@ -31,8 +33,9 @@ STEP = 0.75                          # ConeStepFactor
 START_OFFSET = 1.5                   # ConeStartOffset
 
 
-def build(radiance, direction, correlated):
-    """The directional levels (texels of 2, 4, ... voxels) for travel along +x, -x, +y, ..."""
+def build(radiance, direction, correlated, lo, hi):
+    """The directional levels (texels of 2, 4, ... voxels) for travel along +x, -x, +y, ...;
+    `lo`, `hi`: the scene's bounds in voxels (z, y, x)."""
     axis = (2, 2, 1, 1, 0, 0)[direction]  # arrays are indexed z, y, x
     levels, source = [], radiance
     while source.shape[0] >= 2:
@@ -46,10 +49,24 @@ def build(radiance, direction, correlated):
             line = np.concatenate([front[..., :3] + share * back[..., :3], covered], axis=-1)
         else:
             line = front + (1.0 - front[..., 3:]) * back
+        # columns wholly outside the scene's bounds are left out of the average
+        texel = 2.0 ** len(levels)
+        inside = np.ones(line.shape[:3], bool)
+        for a in range(3):
+            span = 2.0 * texel if a == axis else texel
+            start = np.arange(line.shape[a]) * span
+            shape = [1, 1, 1]
+            shape[a] = -1
+            inside &= ((start < hi[a]) & (start + span > lo[a])).reshape(shape)
+        line = line * inside[..., None]
+        count = inside[..., None].astype(np.float64)
         for other in (a for a in (0, 1, 2) if a != axis):
             n = line.shape[other]
-            line = 0.5 * (np.take(line, np.arange(0, n, 2), axis=other) +
-                          np.take(line, np.arange(1, n, 2), axis=other))
+            line = (np.take(line, np.arange(0, n, 2), axis=other) +
+                    np.take(line, np.arange(1, n, 2), axis=other))
+            count = (np.take(count, np.arange(0, n, 2), axis=other) +
+                     np.take(count, np.arange(1, n, 2), axis=other))
+        line = np.where(count > 0.0, line / np.maximum(count, 1.0), 0.0)
         levels.append(line)
         source = line
     return levels
@@ -62,9 +79,11 @@ def trilinear(volume, p, texel):
 
 
 class Gather:
-    def __init__(self, radiance, correlated=False, arrival=False):
+    def __init__(self, radiance, correlated=True, arrival=True):
         self.radiance = radiance
-        self.mips = [build(radiance, d, correlated) for d in range(6)]
+        occupied = np.argwhere(radiance[..., 3] > 0.0)
+        lo, hi = occupied.min(axis=0), occupied.max(axis=0) + 1
+        self.mips = [build(radiance, d, correlated, lo, hi) for d in range(6)]
         self.arrival = arrival
 
     def sample(self, p, diameter, d):
@@ -143,7 +162,8 @@ def replica_and_pass(scene, world, normal, options=()):
     dims, h = image.GetDimensions(), image.GetSpacing()[0]
     radiance = vtk_to_numpy(image.GetPointData().GetArray(0)).reshape(dims[2], dims[1], dims[0], 4)
     corner = np.array(image.GetOrigin()) - 0.5 * h
-    gather = Gather(radiance.astype(np.float64), "correlated" in options, "arrival" in options)
+    gather = Gather(radiance.astype(np.float64), "independent" not in options,
+                    "own-step" not in options)
     replica = gather.at((world - corner) / h, normal)
     pixels = vtkFloatArray()
     gi.GetFloatImage(vtkVoxelGIPass.IMAGE_INDIRECT, pixels)
