@@ -33,7 +33,7 @@ int MipLevels(int resolution)
 std::size_t VoxelMipmap::RequiredBytes(int resolution, const Settings& settings)
 {
   const int half = std::max(resolution / 2, 1);
-  // (with media, the medium volume adds a twelfth of that)
+  // (with media, the RG8 medium volume adds a 24th of that)
   return settings.AnisotropicMipmaps ? 6 * Volume3D::StorageBytes(GL_RGBA16F, half, MipLevels(half))
                                      : 0;
 }
