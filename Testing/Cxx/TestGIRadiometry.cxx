@@ -26,6 +26,7 @@
 //                 inverse-square attenuation: each voxel bounce adds rho^B of the direct
 //                 light's area mean (view factors of a closed room sum to one); with the
 //                 tail, three bounces give the whole series, the direct mean / (1 - rho).
+//                 At the default 128^3 and at a coarse 32^3.
 //  WallStripes    the back wall of a closed room lit by an emissive ceiling panel: the light
 //                 on it varies smoothly, so what a pixel differs from its 9 x 9 neighbourhood
 //                 (stripes and bands at voxel spacing) is 0 relative to the wall's mean.
@@ -337,16 +338,18 @@ int FurnaceCase(bool defaults)
 // closed room every wall sees the others with view factors summing to one, so the area mean
 // of the radiance after B bounces is M0 (1 + rho + ... + rho^B): bounce B adds rho^B M0,
 // M0 the mean of the direct light. The voxels' radiance is the area mean (walls of even
-// thickness).
-int PointLightRoomCase()
+// thickness). `bounceBound` and `seriesBound`: the errors asserted today at this resolution
+// (the goal is 0.05 for both).
+bool PointLightRoom(int resolution, double bounceBound, double seriesBound)
 {
   const double rho = 0.5;
-  View view(48, 32);
+  const std::string room = "point-light room at " + std::to_string(resolution) + "^3";
+  View view(48, resolution);
   view.Renderer->AutomaticLightCreationOff();
-  vtkNew<vtkCubeSource> room;
-  room->SetBounds(0.0, 4.0, 0.0, 2.4, 0.0, 4.0);
+  vtkNew<vtkCubeSource> cube;
+  cube->SetBounds(0.0, 4.0, 0.0, 2.4, 0.0, 4.0);
   vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(room->GetOutputPort());
+  mapper->SetInputConnection(cube->GetOutputPort());
   vtkNew<vtkActor> walls;
   walls->SetMapper(mapper);
   walls->GetProperty()->SetColor(rho, rho, rho);
@@ -386,42 +389,61 @@ int PointLightRoomCase()
   {
     view.GI->SetBounces(bounces);
     vtkNew<vtkFloatArray> composite;
-    VOXELGI_CHECK(view.Render(composite, nullptr), "GI did not run");
+    if (!view.Render(composite, nullptr))
+    {
+      std::cerr << "FAILED: " << room << ": GI did not run" << std::endl;
+      return false;
+    }
     const double m = meanRadiance();
-    VOXELGI_CHECK(m > 0.0, "no voxel radiance");
+    if (!(m > 0.0))
+    {
+      std::cerr << "FAILED: " << room << ": no voxel radiance" << std::endl;
+      return false;
+    }
     m0 = bounces == 0 ? m : m0;
     if (bounces > 0)
     {
       const double added = (m - previous) / (std::pow(rho, bounces) * m0);
-      std::cout << "point-light room, bounce " << bounces << ": voxel mean " << m << " adds "
-                << added << " of rho^B M0 (mean of the direct light " << m0 << ")" << std::endl;
-      // measured (32^3): 1.098, 1.129, 1.136 of rho^B M0 (1.044, 1.022, 0.979 before the
-      // mipmaps' average inside the scene's bounds and correlated coverage; 1.017, 0.985,
-      // 0.936 before cones ended at the walls of a room lower than the grid); 0.0003 while the
-      // bounce gathered over the winding's side, out of the room
-      ok = Within("point-light room, bounce " + std::to_string(bounces) +
-               ", error of what it adds",
-             std::abs(added - 1.0), 0.05, 0.15) &&
+      std::cout << room << ", bounce " << bounces << ": voxel mean " << m << " adds " << added
+                << " of rho^B M0 (mean of the direct light " << m0 << ")" << std::endl;
+      ok = Within(room + ", bounce " + std::to_string(bounces) + ", error of what it adds",
+             std::abs(added - 1.0), 0.05, bounceBound) &&
         ok;
     }
     if (bounces == 3)
     {
-      SavePng(composite, view.Size, view.Size, "PointLightRoom");
+      SavePng(composite, view.Size, view.Size, "PointLightRoom" + std::to_string(resolution));
     }
     previous = m;
   }
   view.GI->SetBounceTail(true);
   vtkNew<vtkFloatArray> composite;
-  VOXELGI_CHECK(view.Render(composite, nullptr), "GI did not run");
+  if (!view.Render(composite, nullptr))
+  {
+    std::cerr << "FAILED: " << room << ": GI did not run" << std::endl;
+    return false;
+  }
   const double converged = meanRadiance() / (m0 / (1.0 - rho));
-  std::cout << "point-light room, 3 bounces and the tail: voxel mean " << converged
+  std::cout << room << ", 3 bounces and the tail: voxel mean " << converged
             << " of the whole series M0 / (1 - rho)" << std::endl;
-  // measured (32^3): 1.062 (1.009 before the mipmaps' average inside the scene's bounds);
-  // 0.94 without the tail
-  ok = Within("point-light room, 3 bounces and the tail, error against the whole series",
-         std::abs(converged - 1.0), 0.05, 0.07) &&
+  return Within(room + ", 3 bounces and the tail, error against the whole series",
+           std::abs(converged - 1.0), 0.05, seriesBound) &&
     ok;
-  return ok ? EXIT_SUCCESS : EXIT_FAILURE;
+}
+
+// The room at the default resolution and at 32^3, where its 4 x 2.4 x 4 units are about
+// 29 x 17 x 29 voxels and a texel of the coarser mip levels spans a fifth of its height or
+// more.
+// Measured at 128^3: bounces add 1.001, 1.006, 1.007 of rho^B M0, the series 1.003 (64^3:
+// 1.011, 1.016, 1.012 and 1.007). At 32^3: 1.098, 1.129, 1.136 and 1.062 (1.044, 1.022,
+// 0.979 and 1.009 before the mipmaps' average inside the scene's bounds and correlated
+// coverage: a texel at the room's walls averages over few columns there); 0.0003 while the
+// bounce gathered over the winding's side, out of the room.
+int PointLightRoomCase()
+{
+  const bool fine = PointLightRoom(128, 0.05, 0.05);
+  const bool coarse = PointLightRoom(32, 0.15, 0.07);
+  return fine && coarse ? EXIT_SUCCESS : EXIT_FAILURE;
 }
 
 //------------------------------------------------------------------------------
