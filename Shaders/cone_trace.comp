@@ -298,13 +298,22 @@ void main()
   float turn = 1.5707963 * float((pixel.x & 1) + 2 * (pixel.y & 1));
   vec3 t = cos(turn) * t0 + sin(turn) * b0;
   vec3 b = cos(turn) * b0 - sin(turn) * t0;
+  // VTK shades with interpolated normals, which on a coarse curved mesh lean up to 30 degrees
+  // off its triangles: a cone around such a normal may point below the triangle the pixel
+  // lies in, into the surface itself, where no light comes from (it would travel on to
+  // whatever lies beyond). Where the pixel's triangle is known from the depth around it.
+  vec3 facet = gbufferFacetNormal(texCoord, texel, p);
+  facet = dot(facet, viewDir) > 0.0 ? -facet : facet;
   vec3 gathered = vec3(0.0);
   float occlusion = 0.0;
   for (int i = 0; i < coneCount; ++i)
   {
     vec3 d = normalize(coneDirections[i].x * t + coneDirections[i].y * b + coneDirections[i].z * n);
-    float coneOcclusion;
-    gathered += voxelConeTrace(origin, d, diffuseTanHalf, 1.0, maxDistance, aoFalloff, p, n, coneOcclusion).rgb;
+    float coneOcclusion = 1.0;
+    if (dot(d, facet) >= 0.0)
+    {
+      gathered += voxelConeTrace(origin, d, diffuseTanHalf, 1.0, maxDistance, aoFalloff, p, n, coneOcclusion).rgb;
+    }
     occlusion += coneOcclusion;
   }
   gathered /= float(max(coneCount, 1));
