@@ -340,7 +340,7 @@ int FurnaceCase(bool defaults)
 // M0 the mean of the direct light. The voxels' radiance is the area mean (walls of even
 // thickness). `bounceBound` and `seriesBound`: the errors asserted today at this resolution
 // (the goal is 0.05 for both).
-bool PointLightRoom(int resolution, double bounceBound, double seriesBound)
+int PointLightRoom(int resolution, double bounceBound, double seriesBound)
 {
   const double rho = 0.5;
   const std::string room = "point-light room at " + std::to_string(resolution) + "^3";
@@ -389,17 +389,9 @@ bool PointLightRoom(int resolution, double bounceBound, double seriesBound)
   {
     view.GI->SetBounces(bounces);
     vtkNew<vtkFloatArray> composite;
-    if (!view.Render(composite, nullptr))
-    {
-      std::cerr << "FAILED: " << room << ": GI did not run" << std::endl;
-      return false;
-    }
+    VOXELGI_CHECK(view.Render(composite, nullptr), room << ": GI did not run");
     const double m = meanRadiance();
-    if (!(m > 0.0))
-    {
-      std::cerr << "FAILED: " << room << ": no voxel radiance" << std::endl;
-      return false;
-    }
+    VOXELGI_CHECK(m > 0.0, room << ": no voxel radiance");
     m0 = bounces == 0 ? m : m0;
     if (bounces > 0)
     {
@@ -418,17 +410,14 @@ bool PointLightRoom(int resolution, double bounceBound, double seriesBound)
   }
   view.GI->SetBounceTail(true);
   vtkNew<vtkFloatArray> composite;
-  if (!view.Render(composite, nullptr))
-  {
-    std::cerr << "FAILED: " << room << ": GI did not run" << std::endl;
-    return false;
-  }
+  VOXELGI_CHECK(view.Render(composite, nullptr), room << ": GI did not run");
   const double converged = meanRadiance() / (m0 / (1.0 - rho));
   std::cout << room << ", 3 bounces and the tail: voxel mean " << converged
             << " of the whole series M0 / (1 - rho)" << std::endl;
-  return Within(room + ", 3 bounces and the tail, error against the whole series",
-           std::abs(converged - 1.0), 0.05, seriesBound) &&
+  ok = Within(room + ", 3 bounces and the tail, error against the whole series",
+         std::abs(converged - 1.0), 0.05, seriesBound) &&
     ok;
+  return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }
 
 // The room at the default resolution and at 32^3, where its 4 x 2.4 x 4 units are about
@@ -441,9 +430,9 @@ bool PointLightRoom(int resolution, double bounceBound, double seriesBound)
 // bounce gathered over the winding's side, out of the room.
 int PointLightRoomCase()
 {
-  const bool fine = PointLightRoom(128, 0.05, 0.05);
-  const bool coarse = PointLightRoom(32, 0.15, 0.07);
-  return fine && coarse ? EXIT_SUCCESS : EXIT_FAILURE;
+  const int fine = PointLightRoom(128, 0.05, 0.05);
+  const int coarse = PointLightRoom(32, 0.15, 0.07);
+  return fine == EXIT_SUCCESS && coarse == EXIT_SUCCESS ? EXIT_SUCCESS : EXIT_FAILURE;
 }
 
 //------------------------------------------------------------------------------
