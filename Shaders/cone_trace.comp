@@ -73,7 +73,9 @@ vec4 gbufferAt(sampler2D image, vec2 uv)
 }
 
 // Frames a result may be carried over before it is traced again: repeated resampling blurs.
-const uint reuseLimit = 3u;
+// A moving camera carries results across tile classes, whose ages differ: at three, more
+// than a third of the pixels aged out in every frame (the code holds up to 15).
+const uint reuseLimit = 8u;
 
 // A unit vector (octahedral coordinates, 10 bits each) and the result's age in frames, as an
 // exact integer in a float.
@@ -92,9 +94,9 @@ vec3 decodeSurface(float code, out uint age)
 
 // The previous frame's results for the surface at p (normal n, seen along viewDir),
 // interpolated bilinearly from its pixels around p's reprojection that held the same
-// surface: a point within a quarter voxel of p's tangent plane and a voxel of p, a normal
-// within ~18 degrees, a result younger than reuseLimit, and a view direction that turned less
-// than acos(viewCosine). False when p was out of its view or most of that weight belongs to
+// surface: a point within a tenth of a voxel of p's tangent plane and a quarter voxel of p,
+// a normal within ~18 degrees, a result younger than reuseLimit, and a view direction that
+// turned less than acos(viewCosine). False when p was out of its view or most of that weight belongs to
 // other surfaces; `age` gets the oldest result's age.
 bool previousResults(vec3 p, vec3 n, vec3 viewDir, float viewCosine, ivec2 size,
   out vec4 indirect, out vec4 shadowed, out uint age)

@@ -73,6 +73,8 @@ bool VolumeLighting::PreReplaceShaderValues(
   {
     vtkShaderProgram::Substitute(fragment, "//VTK::ComputeColor::Dec",
       std::string(shaders::volume_lighting_glsl) + "\n//VTK::ComputeColor::Dec", false);
+    vtkShaderProgram::Substitute(
+      fragment, "//VTK::Shading::Init", "voxelgiBeginRay();\n//VTK::Shading::Init", false);
   }
   return true;
 }
@@ -80,7 +82,7 @@ bool VolumeLighting::PreReplaceShaderValues(
 bool VolumeLighting::PostReplaceShaderValues(
   std::string&, std::string&, std::string& fragment, vtkAbstractMapper*, vtkProp* prop)
 {
-  if (vtkVolume::SafeDownCast(prop) && fragment.find("voxelgiIndirect") != std::string::npos)
+  if (vtkVolume::SafeDownCast(prop) && fragment.find("voxelgiBeginRay();") != std::string::npos)
   {
     vtkShaderProgram::Substitute(fragment, SampleColor,
       std::string("g_srcColor.rgb += g_srcColor.rgb * voxelgiIndirect(g_dataPos);\n") +
