@@ -74,8 +74,9 @@ vec4 gbufferAt(sampler2D image, vec2 uv)
 
 // Frames a result may be carried over before it is traced again: repeated resampling blurs.
 // A moving camera carries results across tile classes, whose ages differ: at three, more
-// than a third of the pixels aged out in every frame (the code holds up to 15).
-const uint reuseLimit = 8u;
+// than a third of the pixels aged out in every frame; from seven on, results along a contact
+// lingered as bright specks after a headlight orbit (the code holds up to 15).
+const uint reuseLimit = 5u;
 
 // A unit vector (octahedral coordinates, 10 bits each) and the result's age in frames, as an
 // exact integer in a float.

@@ -120,8 +120,8 @@ int TestGITemporalReuse(int, char*[])
     }
   }
   VOXELGI_CHECK(worst[0][0] < 0.01, "the box left a trail: largest difference " << worst[0][0]);
-  // Measured (llvmpipe): mean <= 0.0014, up to 0.72 % of the pixels over 0.02, largest 0.24
-  // (results carried for up to eight frames; at three: 0.0013, 0.50 %, 0.25),
+  // Measured (llvmpipe): mean <= 0.0014, up to 0.56 % of the pixels over 0.02, largest 0.24
+  // (results carried for up to five frames; at three: 0.0013, 0.50 %, 0.25),
   // where the traced light varies sharply within a voxel of this coarse 32^3 grid (a voxel
   // about five pixels wide). The scene light's shadows come from its shadow map and are looked
   // up afresh in reused tiles (resampled, their sharp edges gave up to 0.72); the composite
