@@ -97,8 +97,8 @@ vec3 decodeSurface(float code, out uint age)
 // interpolated bilinearly from its pixels around p's reprojection that held the same
 // surface: a point within a tenth of a voxel of p's tangent plane and a quarter voxel of p,
 // a normal within ~18 degrees, a result younger than reuseLimit, and a view direction that
-// turned less than acos(viewCosine). False when p was out of its view or most of that weight belongs to
-// other surfaces; `age` gets the oldest result's age.
+// turned less than acos(viewCosine). False when p was out of its view or most of that weight
+// belongs to other surfaces; `age` gets the oldest result's age.
 bool previousResults(vec3 p, vec3 n, vec3 viewDir, float viewCosine, ivec2 size,
   out vec4 indirect, out vec4 shadowed, out uint age)
 {

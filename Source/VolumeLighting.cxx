@@ -71,10 +71,14 @@ bool VolumeLighting::PreReplaceShaderValues(
   // Only volumes the scan resampled (composite, one component) carry this pass.
   if (vtkVolume::SafeDownCast(prop))
   {
-    vtkShaderProgram::Substitute(fragment, "//VTK::ComputeColor::Dec",
-      std::string(shaders::volume_lighting_glsl) + "\n//VTK::ComputeColor::Dec", false);
-    vtkShaderProgram::Substitute(
-      fragment, "//VTK::Shading::Init", "voxelgiBeginRay();\n//VTK::Shading::Init", false);
+    // The ray's set-up only where its declaration went in (PostReplaceShaderValues reads the
+    // light only where the set-up did).
+    if (vtkShaderProgram::Substitute(fragment, "//VTK::ComputeColor::Dec",
+          std::string(shaders::volume_lighting_glsl) + "\n//VTK::ComputeColor::Dec", false))
+    {
+      vtkShaderProgram::Substitute(
+        fragment, "//VTK::Shading::Init", "voxelgiBeginRay();\n//VTK::Shading::Init", false);
+    }
   }
   return true;
 }
