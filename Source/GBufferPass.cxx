@@ -2,6 +2,7 @@
 
 #include "Frame.h"
 #include "GLHelpers.h"
+#include "ImposterProxies.h"
 #include "SceneScan.h"
 #include "VoxelGIShaders.h"
 #include "StageIds.h"
@@ -104,6 +105,7 @@ bool GBufferPass::Prepare(const Frame& frame, std::string&)
     this->Normal = NewImageTexture(renWin, GL_RGB10_A2, width, height);
     this->Material = NewImageTexture(renWin, GL_RGBA8, width, height);
     this->Ambient = NewImageTexture(renWin, GL_R11F_G11F_B10F, width, height);
+    this->Facet = NewImageTexture(renWin, GL_RG8, width, height);
     this->Depth = vtkSmartPointer<vtkTextureObject>::New();
     this->Depth->SetContext(renWin);
     this->Depth->SetMinificationFilter(vtkTextureObject::Nearest);
@@ -116,6 +118,7 @@ bool GBufferPass::Prepare(const Frame& frame, std::string&)
   this->Normal->Resize(width, height);
   this->Material->Resize(width, height);
   this->Ambient->Resize(width, height);
+  this->Facet->Resize(width, height);
   this->Depth->Resize(width, height);
   this->LitScene = frame.LitScene;
   return true;
@@ -193,12 +196,13 @@ void GBufferPass::Begin()
   target->AddColorAttachment(1, this->Normal);
   target->AddColorAttachment(2, this->Material);
   target->AddColorAttachment(3, this->Ambient);
+  target->AddColorAttachment(4, this->Facet);
   target->AddDepthAttachment(this->Depth);
   // VTK's clear reaches every attachment (one clear is far cheaper than clearing the data
   // attachments apart); the composite tells the background by its depth.
-  target->ActivateDrawBuffers(4);
+  target->ActivateDrawBuffers(5);
   target->StartNonOrtho(this->Color->GetWidth(), this->Color->GetHeight());
-  for (unsigned int i = 0; i < 3; ++i)
+  for (unsigned int i = 0; i < 4; ++i)
   {
     this->BlendWasEnabled[i] = glIsEnabledi(GL_BLEND, i + 1) == GL_TRUE;
   }
@@ -212,6 +216,7 @@ void GBufferPass::SetDataBlending(bool polyData)
   // their second output holds.
   glDisablei(GL_BLEND, 2);
   glDisablei(GL_BLEND, 3);
+  glDisablei(GL_BLEND, 4);
   if (polyData)
   {
     glDisablei(GL_BLEND, 1);
@@ -225,7 +230,7 @@ void GBufferPass::SetDataBlending(bool polyData)
 
 void GBufferPass::End()
 {
-  for (unsigned int i = 0; i < 3; ++i)
+  for (unsigned int i = 0; i < 4; ++i)
   {
     if (this->BlendWasEnabled[i])
     {
@@ -255,6 +260,17 @@ bool GBufferPass::ReplaceShaderValues(
     return true;
   }
   std::string defines;
+  // The triangle's own plane, from the derivatives of the fragment's view position, taken
+  // where VTK takes them itself: before any branch or discard. Not for the sprites VTK draws
+  // as spheres and tubes, whose shape is not their sprite's plane.
+  vtkActor* actor = vtkActor::SafeDownCast(prop);
+  const std::string position = "vec4 vertexVC = vertexVCVSOutput;";
+  if (!(actor && ImposterProxies::Applies(actor)) &&
+    vtkShaderProgram::Substitute(fragment, position,
+      position + "\n  vec3 voxelgiFacet = cross(dFdx(vertexVC.xyz), dFdy(vertexVC.xyz));"))
+  {
+    defines += "#define VOXELGI_HAS_FACET\n";
+  }
   if (fragment.find("normalVCVSOutput") != std::string::npos)
   {
     defines += "#define VOXELGI_HAS_NORMAL\n";
@@ -272,7 +288,6 @@ bool GBufferPass::ReplaceShaderValues(
     defines += "#define VOXELGI_HAS_AMBIENT\n";
   }
   defines += "uniform float voxelgiOccludable;\n";
-  vtkActor* actor = vtkActor::SafeDownCast(prop);
   if (!this->LitScene && actor && actor->GetProperty()->GetLighting())
   {
     defines += "#define VOXELGI_AMBIENT_ONLY\n";
@@ -295,7 +310,7 @@ bool GBufferPass::SetParameters(vtkShaderProgram* program, vtkAbstractMapper* ma
   const bool polyData = vtkOpenGLPolyDataMapper::SafeDownCast(mapper) != nullptr;
   if (this->IntoGBuffer)
   {
-    this->Framebuffer->ActivateDrawBuffers(polyData ? 4 : 2);
+    this->Framebuffer->ActivateDrawBuffers(polyData ? 5 : 2);
   }
   if (polyData)
   {
@@ -320,7 +335,7 @@ bool GBufferPass::SetParameters(vtkShaderProgram* program, vtkAbstractMapper* ma
 void GBufferPass::ReleaseGraphicsResources(vtkWindow* window)
 {
   for (vtkTextureObject* texture : { this->Color.Get(), this->Normal.Get(), this->Material.Get(),
-         this->Ambient.Get(), this->Depth.Get() })
+         this->Ambient.Get(), this->Facet.Get(), this->Depth.Get() })
   {
     if (texture)
     {
@@ -332,7 +347,7 @@ void GBufferPass::ReleaseGraphicsResources(vtkWindow* window)
     this->Framebuffer->ReleaseGraphicsResources(window);
   }
   this->Framebuffer = nullptr;
-  this->Color = this->Normal = this->Material = this->Ambient = this->Depth = nullptr;
+  this->Color = this->Normal = this->Material = this->Ambient = this->Facet = this->Depth = nullptr;
 }
 
 }
