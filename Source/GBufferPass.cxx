@@ -198,9 +198,14 @@ void GBufferPass::Begin()
   target->AddColorAttachment(3, this->Ambient);
   target->AddColorAttachment(4, this->Facet);
   target->AddDepthAttachment(this->Depth);
-  // VTK's clear reaches every attachment (one clear is far cheaper than clearing the data
-  // attachments apart); the composite tells the background by its depth.
+  // The triangles' normals are zero (not known) where no draw writes them: the surfaces that
+  // do not need them, the background.
+  const float unknown[4] = { 0.f, 0.f, 0.f, 0.f };
   target->ActivateDrawBuffers(5);
+  glClearBufferfv(GL_COLOR, 4, unknown);
+  // VTK's clear reaches every other attachment (one clear is far cheaper than clearing the
+  // data attachments apart); the composite tells the background by its depth.
+  target->ActivateDrawBuffers(4);
   target->StartNonOrtho(this->Color->GetWidth(), this->Color->GetHeight());
   for (unsigned int i = 0; i < 4; ++i)
   {
@@ -304,13 +309,16 @@ bool GBufferPass::ReplaceShaderValues(
 
 bool GBufferPass::SetParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop)
 {
-  // Polydata mappers write all attachments, other mappers the colour and (SetDataBlending)
+  // Polydata mappers write the data attachments, other mappers the colour and (SetDataBlending)
   // an empty surface. VTK's own framebuffer keeps its draw buffers: the data outputs go
   // nowhere there.
   const bool polyData = vtkOpenGLPolyDataMapper::SafeDownCast(mapper) != nullptr;
   if (this->IntoGBuffer)
   {
-    this->Framebuffer->ActivateDrawBuffers(polyData ? 5 : 2);
+    // Another target costs on GPUs with few raster units: only surfaces whose normals lean
+    // off their triangles write theirs.
+    const bool facets = polyData && this->Facets.Needs(vtkActor::SafeDownCast(prop));
+    this->Framebuffer->ActivateDrawBuffers(facets ? 5 : polyData ? 4 : 2);
   }
   if (polyData)
   {

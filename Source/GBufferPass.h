@@ -4,13 +4,16 @@
  * sample per pixel, while fragment code it injects into the polydata mappers (gbuffer.frag) adds
  * the surface, packed (the view-space normal, specular power and the pixel's kind; attachment 1,
  * gbuffer_encoding.glsl), the albedo and specular intensity (attachment 2), the ambient term
- * (attachment 3) and the normal of the triangle itself (attachment 4); depth goes to a float texture (the vtkSSAOPass pattern). A delegate that is
+ * (attachment 3) and, for surfaces shaded with normals that lean off their triangles
+ * (FacetNeed), the normal of the triangle itself (attachment 4; zero elsewhere); depth goes to a float texture (the vtkSSAOPass pattern). A delegate that is
  * not a vtkRenderStepsPass renders whole into attachment 0. The same pass draws VTK's own image
  * of those steps into the frame's framebuffer (RenderVTK), with the window's multisampling,
  * through the same shaders, so that a mapper keeps one shader program for both draws.
  */
 #ifndef VoxelGIGBufferPass_h
 #define VoxelGIGBufferPass_h
+
+#include "FacetNeed.h"          // for FacetNeed
 
 #include "vtkNew.h"              // for vtkNew
 #include "vtkRenderPass.h"       // for the superclass
@@ -87,6 +90,7 @@ private:
   vtkSmartPointer<vtkTextureObject> Material;
   vtkSmartPointer<vtkTextureObject> Ambient;
   vtkSmartPointer<vtkTextureObject> Facet;
+  FacetNeed Facets; // which polydata draws write the triangles' normals
   vtkSmartPointer<vtkTextureObject> Depth;
   bool IntoGBuffer = false; // Render() draws into the G-buffer, else into VTK's framebuffer
   bool BlendWasEnabled[4] = { false, false, false, false };
