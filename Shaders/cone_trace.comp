@@ -28,7 +28,6 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 uniform sampler2D gbufferNormal;   // the packed surface (gbuffer_encoding.glsl)
 uniform sampler2D gbufferMaterial;
-uniform sampler2D gbufferFacet;    // the normal of the pixel's own triangle
 uniform mat3 normalToGrid;      // view-space normals -> grid directions
 uniform vec3 coneDirections[VOXELGI_MAX_CONES];
 uniform int coneCount;
@@ -305,9 +304,8 @@ void main()
   // VTK shades with interpolated normals, which on a coarse curved mesh lean up to 30 degrees
   // off its triangles: a cone around such a normal may point below the triangle the pixel
   // lies in, into the surface itself, where no light comes from (it would travel on to
-  // whatever lies beyond).
-  vec3 facet = gbufferFacetNormal(gbufferAt(gbufferFacet, texCoord));
-  facet = dot(facet, facet) > 0.0 ? normalize(normalToGrid * facet) : facet;
+  // whatever lies beyond). Where the pixel's triangle is known from the depth around it.
+  vec3 facet = gbufferFacetNormal(texCoord, texel, p);
   facet = dot(facet, viewDir) > 0.0 ? -facet : facet;
   vec3 gathered = vec3(0.0);
   float occlusion = 0.0;

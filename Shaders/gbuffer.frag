@@ -3,8 +3,7 @@
 // VTK's own image into the window (where only attachment 0 exists, so the rest is dropped) and
 // the G-buffer: attachment 0 keeps VTK's shaded colour, 1 the surface (normal, specular power
 // and kind, packed), 2 the albedo (diffuse colour times texture) and specular intensity, 3 the
-// ambient term (times texture) that the composite builds on, 4 the triangle's own normal
-// (gbufferEncodeFacet; VOXELGI_HAS_FACET: voxelgiFacet was taken where the flow is uniform). The kind says what it means: 0
+// ambient term (times texture) that the composite builds on. The kind says what it means: 0
 // nothing a polydata mapper drew (the G-buffer writes other mappers' surface as zero, and tells
 // its background by the depth), 1 VTK's colour is kept and the ambient term is its part AO
 // darkens (zero on emitters, voxelgiOccludable 0), 2 and 3 only the ambient term is kept, of a
@@ -42,8 +41,3 @@
   gl_FragData[1] = gbufferEncodeSurface(voxelgiNormal, voxelgiSpecularPower, voxelgiKind);
   gl_FragData[2] = vec4(diffuseColor * voxelgiTexture, voxelgiSpecular);
   gl_FragData[3] = vec4(voxelgiAmbient, 1.0);
-#ifdef VOXELGI_HAS_FACET
-  gl_FragData[4] = vec4(gbufferEncodeFacet(voxelgiFacet), 0.0, 0.0);
-#else
-  gl_FragData[4] = vec4(0.0);
-#endif

@@ -55,23 +55,3 @@ float gbufferSurfaceKind(vec4 texel)
 {
   return floor(texel.a * 3.0 + 0.5);
 }
-
-// The facet attachment (RG8): the unit view-space normal of the triangle a fragment lies in
-// (from the derivatives of its position: exact up to the triangle's edges, where the depth
-// around a pixel belongs to other triangles), turned to positive z, in octahedral
-// coordinates. (0, 0), which no such normal encodes to, where it is not known.
-vec2 gbufferEncodeFacet(vec3 n)
-{
-  if (!(dot(n, n) > 0.0))
-  {
-    return vec2(0.0);
-  }
-  return gbufferOctahedral(normalize(n.z < 0.0 ? -n : n));
-}
-
-// The facet normal of a facet texel (gbufferEncodeFacet), zero where it is not known. Its
-// sign is arbitrary.
-vec3 gbufferFacetNormal(vec4 texel)
-{
-  return all(lessThan(texel.rg, vec2(0.5 / 255.0))) ? vec3(0.0) : gbufferFromOctahedral(texel.rg);
-}

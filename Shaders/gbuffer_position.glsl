@@ -23,3 +23,26 @@ vec3 gbufferDepthNormal(vec2 uv, vec2 texel, vec3 p)
     gbufferPositionAt(uv + vec2(0.0, texel.y)) - p);
   return dot(n, n) > 0.0 ? normalize(n) : vec3(0.0);
 }
+
+// The unit normal of the plane p lies in, where the pixels on either side of it (`texel`
+// apart) lie in it too, both ways (p inside one triangle, or on a flat surface: not at an
+// edge, a crease or a silhouette, nor on a surface a few pixels wide); zero elsewhere. Its
+// sign is arbitrary.
+vec3 gbufferFacetNormal(vec2 uv, vec2 texel, vec3 p)
+{
+  vec3 tangents[2];
+  for (int axis = 0; axis < 2; ++axis)
+  {
+    vec2 step = axis == 0 ? vec2(texel.x, 0.0) : vec2(0.0, texel.y);
+    vec3 after = gbufferPositionAt(uv + step) - p;
+    vec3 before = p - gbufferPositionAt(uv - step);
+    // (within about 6 degrees: the depth's rounding, not a fold)
+    if (!(dot(after, before) > 0.995 * length(after) * length(before)))
+    {
+      return vec3(0.0);
+    }
+    tangents[axis] = after + before;
+  }
+  vec3 n = cross(tangents[0], tangents[1]);
+  return dot(n, n) > 0.0 ? normalize(n) : vec3(0.0);
+}

@@ -74,7 +74,6 @@ void ConeTrace::SetUniforms(const Frame& frame)
   p.SetMat3("normalToGrid", normalToGrid);
   p.SetInt("gbufferNormal", this->GBuffer.GetNormal()->GetTextureUnit());
   p.SetInt("gbufferMaterial", this->GBuffer.GetMaterial()->GetTextureUnit());
-  p.SetInt("gbufferFacet", this->GBuffer.GetFacet()->GetTextureUnit());
   p.SetInt("gbufferDepth", this->GBuffer.GetDepth()->GetTextureUnit());
   p.SetVec3Array("coneDirections", this->Cones.Count, this->Cones.Directions);
   p.SetInt("coneCount", this->Cones.Count);
@@ -132,7 +131,7 @@ void ConeTrace::Run(const Frame& frame)
     frame.Shadows->Bind(p, samplers);
   }
   ScopedTextures inputs({ this->GBuffer.GetNormal(), this->GBuffer.GetMaterial(),
-    this->GBuffer.GetFacet(), this->GBuffer.GetDepth(), before.Indirect, before.Shadowed, before.Surface });
+    this->GBuffer.GetDepth(), before.Indirect, before.Shadowed, before.Surface });
   this->HistoryValid = false;
   this->Reused = false;
   if (!(samplers.Complete() && inputs.Complete()))

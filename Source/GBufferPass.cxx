@@ -2,7 +2,6 @@
 
 #include "Frame.h"
 #include "GLHelpers.h"
-#include "ImposterProxies.h"
 #include "SceneScan.h"
 #include "VoxelGIShaders.h"
 #include "StageIds.h"
@@ -105,7 +104,6 @@ bool GBufferPass::Prepare(const Frame& frame, std::string&)
     this->Normal = NewImageTexture(renWin, GL_RGB10_A2, width, height);
     this->Material = NewImageTexture(renWin, GL_RGBA8, width, height);
     this->Ambient = NewImageTexture(renWin, GL_R11F_G11F_B10F, width, height);
-    this->Facet = NewImageTexture(renWin, GL_RG8, width, height);
     this->Depth = vtkSmartPointer<vtkTextureObject>::New();
     this->Depth->SetContext(renWin);
     this->Depth->SetMinificationFilter(vtkTextureObject::Nearest);
@@ -118,7 +116,6 @@ bool GBufferPass::Prepare(const Frame& frame, std::string&)
   this->Normal->Resize(width, height);
   this->Material->Resize(width, height);
   this->Ambient->Resize(width, height);
-  this->Facet->Resize(width, height);
   this->Depth->Resize(width, height);
   this->LitScene = frame.LitScene;
   return true;
@@ -196,18 +193,12 @@ void GBufferPass::Begin()
   target->AddColorAttachment(1, this->Normal);
   target->AddColorAttachment(2, this->Material);
   target->AddColorAttachment(3, this->Ambient);
-  target->AddColorAttachment(4, this->Facet);
   target->AddDepthAttachment(this->Depth);
-  // The triangles' normals are zero (not known) where no draw writes them: the surfaces that
-  // do not need them, the background.
-  const float unknown[4] = { 0.f, 0.f, 0.f, 0.f };
-  target->ActivateDrawBuffers(5);
-  glClearBufferfv(GL_COLOR, 4, unknown);
-  // VTK's clear reaches every other attachment (one clear is far cheaper than clearing the
-  // data attachments apart); the composite tells the background by its depth.
+  // VTK's clear reaches every attachment (one clear is far cheaper than clearing the data
+  // attachments apart); the composite tells the background by its depth.
   target->ActivateDrawBuffers(4);
   target->StartNonOrtho(this->Color->GetWidth(), this->Color->GetHeight());
-  for (unsigned int i = 0; i < 4; ++i)
+  for (unsigned int i = 0; i < 3; ++i)
   {
     this->BlendWasEnabled[i] = glIsEnabledi(GL_BLEND, i + 1) == GL_TRUE;
   }
@@ -221,7 +212,6 @@ void GBufferPass::SetDataBlending(bool polyData)
   // their second output holds.
   glDisablei(GL_BLEND, 2);
   glDisablei(GL_BLEND, 3);
-  glDisablei(GL_BLEND, 4);
   if (polyData)
   {
     glDisablei(GL_BLEND, 1);
@@ -235,7 +225,7 @@ void GBufferPass::SetDataBlending(bool polyData)
 
 void GBufferPass::End()
 {
-  for (unsigned int i = 0; i < 4; ++i)
+  for (unsigned int i = 0; i < 3; ++i)
   {
     if (this->BlendWasEnabled[i])
     {
@@ -265,17 +255,6 @@ bool GBufferPass::ReplaceShaderValues(
     return true;
   }
   std::string defines;
-  // The triangle's own plane, from the derivatives of the fragment's view position, taken
-  // where VTK takes them itself: before any branch or discard. Not for the sprites VTK draws
-  // as spheres and tubes, whose shape is not their sprite's plane.
-  vtkActor* actor = vtkActor::SafeDownCast(prop);
-  const std::string position = "vec4 vertexVC = vertexVCVSOutput;";
-  if (!(actor && ImposterProxies::Applies(actor)) &&
-    vtkShaderProgram::Substitute(fragment, position,
-      position + "\n  vec3 voxelgiFacet = cross(dFdx(vertexVC.xyz), dFdy(vertexVC.xyz));"))
-  {
-    defines += "#define VOXELGI_HAS_FACET\n";
-  }
   if (fragment.find("normalVCVSOutput") != std::string::npos)
   {
     defines += "#define VOXELGI_HAS_NORMAL\n";
@@ -293,6 +272,7 @@ bool GBufferPass::ReplaceShaderValues(
     defines += "#define VOXELGI_HAS_AMBIENT\n";
   }
   defines += "uniform float voxelgiOccludable;\n";
+  vtkActor* actor = vtkActor::SafeDownCast(prop);
   if (!this->LitScene && actor && actor->GetProperty()->GetLighting())
   {
     defines += "#define VOXELGI_AMBIENT_ONLY\n";
@@ -309,16 +289,13 @@ bool GBufferPass::ReplaceShaderValues(
 
 bool GBufferPass::SetParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop)
 {
-  // Polydata mappers write the data attachments, other mappers the colour and (SetDataBlending)
+  // Polydata mappers write all attachments, other mappers the colour and (SetDataBlending)
   // an empty surface. VTK's own framebuffer keeps its draw buffers: the data outputs go
   // nowhere there.
   const bool polyData = vtkOpenGLPolyDataMapper::SafeDownCast(mapper) != nullptr;
   if (this->IntoGBuffer)
   {
-    // Another target costs on GPUs with few raster units: only surfaces whose normals lean
-    // off their triangles write theirs.
-    const bool facets = polyData && this->Facets.Needs(vtkActor::SafeDownCast(prop));
-    this->Framebuffer->ActivateDrawBuffers(facets ? 5 : polyData ? 4 : 2);
+    this->Framebuffer->ActivateDrawBuffers(polyData ? 4 : 2);
   }
   if (polyData)
   {
@@ -343,7 +320,7 @@ bool GBufferPass::SetParameters(vtkShaderProgram* program, vtkAbstractMapper* ma
 void GBufferPass::ReleaseGraphicsResources(vtkWindow* window)
 {
   for (vtkTextureObject* texture : { this->Color.Get(), this->Normal.Get(), this->Material.Get(),
-         this->Ambient.Get(), this->Facet.Get(), this->Depth.Get() })
+         this->Ambient.Get(), this->Depth.Get() })
   {
     if (texture)
     {
@@ -355,7 +332,7 @@ void GBufferPass::ReleaseGraphicsResources(vtkWindow* window)
     this->Framebuffer->ReleaseGraphicsResources(window);
   }
   this->Framebuffer = nullptr;
-  this->Color = this->Normal = this->Material = this->Ambient = this->Facet = this->Depth = nullptr;
+  this->Color = this->Normal = this->Material = this->Ambient = this->Depth = nullptr;
 }
 
 }

@@ -3,17 +3,14 @@
  * opaque geometry (its own shading kept in attachment 0) into the pass's framebuffer at one
  * sample per pixel, while fragment code it injects into the polydata mappers (gbuffer.frag) adds
  * the surface, packed (the view-space normal, specular power and the pixel's kind; attachment 1,
- * gbuffer_encoding.glsl), the albedo and specular intensity (attachment 2), the ambient term
- * (attachment 3) and, for surfaces shaded with normals that lean off their triangles
- * (FacetNeed), the normal of the triangle itself (attachment 4; zero elsewhere); depth goes to a float texture (the vtkSSAOPass pattern). A delegate that is
+ * gbuffer_encoding.glsl), the albedo and specular intensity (attachment 2) and the ambient term
+ * (attachment 3); depth goes to a float texture (the vtkSSAOPass pattern). A delegate that is
  * not a vtkRenderStepsPass renders whole into attachment 0. The same pass draws VTK's own image
  * of those steps into the frame's framebuffer (RenderVTK), with the window's multisampling,
  * through the same shaders, so that a mapper keeps one shader program for both draws.
  */
 #ifndef VoxelGIGBufferPass_h
 #define VoxelGIGBufferPass_h
-
-#include "FacetNeed.h"          // for FacetNeed
 
 #include "vtkNew.h"              // for vtkNew
 #include "vtkRenderPass.h"       // for the superclass
@@ -56,8 +53,6 @@ public:
   vtkTextureObject* GetMaterial() const { return this->Material; }
   /// VTK's ambient term of surfaces that do not emit: the part AO may darken.
   vtkTextureObject* GetAmbient() const { return this->Ambient; }
-  /// The normal of the triangle each pixel lies in (gbuffer_encoding.glsl).
-  vtkTextureObject* GetFacet() const { return this->Facet; }
   vtkTextureObject* GetDepth() const { return this->Depth; }
 
   // Shader injection into the mappers, through the render pass object all G-buffers of a
@@ -89,11 +84,9 @@ private:
   vtkSmartPointer<vtkTextureObject> Normal;
   vtkSmartPointer<vtkTextureObject> Material;
   vtkSmartPointer<vtkTextureObject> Ambient;
-  vtkSmartPointer<vtkTextureObject> Facet;
-  FacetNeed Facets; // which polydata draws write the triangles' normals
   vtkSmartPointer<vtkTextureObject> Depth;
   bool IntoGBuffer = false; // Render() draws into the G-buffer, else into VTK's framebuffer
-  bool BlendWasEnabled[4] = { false, false, false, false };
+  bool BlendWasEnabled[3] = { false, false, false };
   bool LitScene = true;
   vtkRenderPass* Opaque = nullptr; // what Render() runs this frame
   // Camera + lights + opaque steps of a vtkRenderStepsPass delegate.
