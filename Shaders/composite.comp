@@ -101,7 +101,7 @@ void main()
       {
         continue;
       }
-      vec2 uv = (texel + 0.5) / traceSize;
+      vec2 uv = gbufferTracedCoord(texel, traceSize);
       float d = textureLod(gbufferDepth, uv, 0.0).r;
       if (d >= 1.0)
       {

@@ -14,7 +14,9 @@
 // Temporal reuse (temporalPhase >= 0, frames where only the camera changed): the tiles of one
 // class of four are traced, the others take the previous frame's result where the previous
 // frame saw the same surface there (reprojected position, normal and, on specular surfaces,
-// the view direction), and are traced where it did not. Shadows that all come from maps are
+// the view direction). Where it did not, the pixel is listed, and a second dispatch
+// (retracePass) traces the listed pixels side by side: traced in place, one such pixel kept
+// its whole group of threads busy for a full trace. Shadows that all come from maps are
 // looked up afresh in every pixel.
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -50,6 +52,12 @@ uniform sampler2D previousSurface;
 uniform mat4 previousGridFromNDC;
 uniform mat4 previousNDCFromGrid;
 uniform vec4 previousEye;          // grid coordinates (w 1) or direction of view (parallel, w 0)
+uniform int retracePass;           // 1: trace the listed pixels, 64 to a group
+layout(std430, binding = VOXELGI_RETRACE_LIST_BINDING) buffer RetraceList
+{
+  uint retraceDispatch[4]; // groups x, y, z of the second dispatch; pixels listed
+  uint retracePixels[];    // x | y << 16
+};
 
 // Half-angle tangent of a cone matching VTK's Phong lobe of this specular power.
 float specularTanHalf(float power)
@@ -130,7 +138,7 @@ bool previousResults(vec3 p, vec3 n, vec3 viewDir, float viewCosine, ivec2 size,
         continue;
       }
       vec4 q = previousGridFromNDC *
-        vec4((vec2(texel) + 0.5) / vec2(size) * 2.0 - 1.0, surface.x * 2.0 - 1.0, 1.0);
+        vec4(gbufferTracedCoord(vec2(texel), vec2(size)) * 2.0 - 1.0, surface.x * 2.0 - 1.0, 1.0);
       vec3 d = q.xyz / q.w - p;
       uint texelAge;
       vec3 m = decodeSurface(surface.y, texelAge);
@@ -220,16 +228,38 @@ vec3 occludedDirect(vec3 p, vec3 origin, vec3 n, vec3 viewDir, vec3 albedo, floa
   return occluded;
 }
 
+// Put the pixel on the list the second dispatch traces, counting its groups of 64.
+void listForRetrace(ivec2 pixel)
+{
+  uint i = atomicAdd(retraceDispatch[3], 1u);
+  retracePixels[i] = uint(pixel.x) | (uint(pixel.y) << 16);
+  if ((i & 63u) == 0u)
+  {
+    atomicAdd(retraceDispatch[0], 1u);
+  }
+}
+
 void main()
 {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+  if (retracePass != 0)
+  {
+    uint i = gl_WorkGroupID.x * 64u + gl_LocalInvocationIndex;
+    if (i >= retraceDispatch[3])
+    {
+      return;
+    }
+    pixel = ivec2(retracePixels[i] & 0xffffu, retracePixels[i] >> 16);
+  }
   ivec2 size = imageSize(traceIndirect);
   if (any(greaterThanEqual(pixel, size)))
   {
     return;
   }
-  vec2 texel = 1.0 / vec2(size);
-  vec2 texCoord = (vec2(pixel) + 0.5) * texel;
+  vec2 texCoord = gbufferTracedCoord(vec2(pixel), vec2(size));
+  // Planes from the G-buffer's next pixels: at a lower trace resolution the next traced ones
+  // lie farther apart and more often across an edge.
+  vec2 texel = 1.0 / vec2(textureSize(gbufferDepth, 0));
   float depth = gbufferAt(gbufferDepth, texCoord).r;
   if (depth >= 1.0)
   {
@@ -265,7 +295,7 @@ void main()
   float specular = material.a;
 
   uvec2 tile = gl_WorkGroupID.xy & 1u;
-  if (temporalPhase >= 0 && int(tile.x + 2u * tile.y) != temporalPhase)
+  if (temporalPhase >= 0 && retracePass == 0 && int(tile.x + 2u * tile.y) != temporalPhase)
   {
     // Specular light depends on the view, and so do the highlights that cone shadows take
     // away (map shadows are looked up afresh below): reuse them only over a small fraction
@@ -288,6 +318,8 @@ void main()
       imageStore(traceSurface, pixel, vec4(depth, encodeSurface(n, age + 1u), 0.0, 0.0));
       return;
     }
+    listForRetrace(pixel);
+    return;
   }
   imageStore(traceSurface, pixel, vec4(depth, encodeSurface(n, 0u), 0.0, 0.0));
 

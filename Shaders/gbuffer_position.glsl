@@ -8,6 +8,16 @@ vec3 gbufferGridPosition(vec2 uv, float depth)
   return p.xyz / p.w;
 }
 
+// The G-buffer pixel a traced pixel (of `traceSize`) stands for, as texture coordinates of its
+// centre: the one holding the traced pixel's centre (at half the resolution that centre is a
+// corner between four: the one above and right of it), so that the position reconstructed
+// there and the depth read there belong together.
+vec2 gbufferTracedCoord(vec2 tracedPixel, vec2 traceSize)
+{
+  vec2 size = vec2(textureSize(gbufferDepth, 0));
+  return (floor((tracedPixel + 0.5) / traceSize * size) + 0.5) / size;
+}
+
 // The position the G-buffer's depth holds at uv.
 vec3 gbufferPositionAt(vec2 uv)
 {

@@ -45,6 +45,10 @@
 #define VOXELGI_LARGE_TRIANGLE_BINDING 14
 #define VOXELGI_SCENE_CELL_COLOR_BINDING 15
 
+/* Shader storage binding of the trace's list of pixels to trace again (cone_trace.comp):
+   the pixels of reused tiles that could not take the last frame's result. */
+#define VOXELGI_RETRACE_LIST_BINDING 18
+
 /* Image units of the voxelization stage. */
 #define VOXELGI_FLAG_IMAGE_UNIT 0
 

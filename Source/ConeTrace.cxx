@@ -8,6 +8,7 @@
 #include "VoxelGIShaders.h"
 #include "VoxelMipmap.h"
 #include "StageIds.h"
+#include "TraceScale.h"
 
 #include "vtkCamera.h"
 #include "vtkMath.h"
@@ -33,7 +34,8 @@ ConeTrace::ConeTrace(const GBufferPass& gbuffer)
 
 bool ConeTrace::Prepare(const Frame& frame, std::string& error)
 {
-  const double scale = frame.Config.TraceResolution;
+  const double scale =
+    TraceScale(frame.Config.TraceResolution, frame.Config.MaxTraceMegapixels, frame.Width, frame.Height);
   const int tw = std::max(1, static_cast<int>(std::ceil(frame.Width * scale)));
   const int th = std::max(1, static_cast<int>(std::ceil(frame.Height * scale)));
   for (TraceImages& images : this->History)
@@ -117,10 +119,15 @@ void ConeTrace::SetHistoryUniforms(const Frame& frame, bool reuse)
 void ConeTrace::Run(const Frame& frame)
 {
   ScopedStage stage(*frame.Clock, stage::ConeTrace);
-  const bool reuse = frame.Config.TemporalReuse && frame.Plan.Trace == TraceWork::CameraOnly && this->HistoryValid;
   this->Current = 1 - this->Current;
   const TraceImages& now = this->History[this->Current];
   const TraceImages& before = this->History[1 - this->Current];
+  const int width = now.Indirect->GetWidth();
+  const int height = now.Indirect->GetHeight();
+  // Without room for the list of pixels to trace again, every pixel is traced.
+  const bool reuse = frame.Config.TemporalReuse && frame.Plan.Trace == TraceWork::CameraOnly &&
+    this->HistoryValid &&
+    this->RetraceList.Allocate(sizeof(unsigned int) * (4 + static_cast<std::size_t>(width) * height));
   GLProgram& p = this->Program;
   p.Use(frame.Window);
   SamplerBindings samplers(frame.Window);
@@ -146,7 +153,21 @@ void ConeTrace::Run(const Frame& frame)
   BindImage2D(0, now.Indirect, GL_WRITE_ONLY, GL_RGBA16F);
   BindImage2D(1, now.Shadowed, GL_WRITE_ONLY, GL_RGBA16F);
   BindImage2D(2, now.Surface, GL_WRITE_ONLY, GL_RG32F);
-  p.DispatchImage(now.Indirect->GetWidth(), now.Indirect->GetHeight(), Tile);
+  if (reuse)
+  {
+    const unsigned int emptyList[4] = { 0, 1, 1, 0 }; // no group yet; 1 x 1 in y and z
+    this->RetraceList.Upload(emptyList, sizeof(emptyList));
+    this->RetraceList.Bind(VOXELGI_RETRACE_LIST_BINDING);
+  }
+  p.SetInt("retracePass", 0);
+  p.DispatchImage(width, height, Tile);
+  if (reuse)
+  {
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+    p.Use(frame.Window);
+    p.SetInt("retracePass", 1);
+    p.DispatchIndirect(this->RetraceList);
+  }
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   this->HistoryValid = true;
   this->Reused = reuse;
@@ -168,6 +189,7 @@ void ConeTrace::ReleaseGraphicsResources(vtkWindow* window)
   }
   this->HistoryValid = false;
   this->Reused = false;
+  this->RetraceList.Release();
   this->Program.Release();
 }
 

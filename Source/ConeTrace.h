@@ -1,6 +1,6 @@
 /**
  * ConeTrace stage (cone_trace.comp, a compute dispatch in 8x8 tiles): per pixel of the G-buffer, at the trace resolution
- * (TraceResolution of the image's), diffuse cones over the normal's hemisphere (indirect
+ * (TraceScale: TraceResolution of the image's, halved above MaxTraceMegapixels), diffuse cones over the normal's hemisphere (indirect
  * diffuse and AO), one specular cone whose aperture follows the specular power, and a narrow
  * cone toward each light for its shadow, through the radiance mipmaps (a scene light with a
  * shadow map of the frame's, Frame::Shadows, is looked up there instead). The diffuse cone
@@ -11,13 +11,15 @@
  * Temporal reuse: in a frame where only the camera changed (Frame::CameraOnly), one tile in
  * four (rotating) is traced and the others take last frame's result at the surface's
  * reprojected position, unless the surface there differs (position, normal, or, for specular
- * surfaces, the view direction): then they are traced too. So every pixel is fresh at least
- * every fourth frame and nothing is reused across a change of the surface it belongs to.
+ * surfaces, the view direction): then they are listed and traced by a second, indirect
+ * dispatch over the list alone. So every pixel is fresh at least every fourth frame and
+ * nothing is reused across a change of the surface it belongs to.
  */
 #ifndef VoxelGIConeTrace_h
 #define VoxelGIConeTrace_h
 
 #include "ConeSettings.h"
+#include "GLHelpers.h" // for StorageBuffer
 
 #include "vtkSmartPointer.h"  // for vtkSmartPointer
 #include "vtkTextureObject.h" // for vtkSmartPointer
@@ -67,6 +69,8 @@ private:
   GLProgram Program;
   bool WithShadowMaps = false; // the program's variant
   std::array<TraceImages, 2> History; // this frame's and the previous frame's
+  // Dispatch arguments, count and pixels of reused tiles to trace again (cone_trace.comp).
+  StorageBuffer RetraceList;
   int Current = 0;
   bool HistoryValid = false;
   bool Reused = false;

@@ -766,7 +766,9 @@ int main(int argc, char* argv[])
   json << "{\n  \"scene\": \"" << o.Scene << "\", \"actors\": " << actors.size()
        << ", \"triangles\": " << triangles << ", \"width\": " << o.Width
        << ", \"height\": " << o.Height << ", \"resolution\": " << o.Resolution
-       << ", \"trace_scale\": " << o.TraceScale << ", \"temporal_reuse\": " << o.TemporalReuse
+       << ", \"trace_scale\": " << o.TraceScale
+       << ", \"max_trace_megapixels\": " << gi->GetMaxTraceMegapixels()
+       << ", \"temporal_reuse\": " << o.TemporalReuse
        << ", \"multisamples\": " << window->GetMultiSamples() << ", \"bounces\": "
        << gi->GetBounces() << ", \"update_interval\": " << o.UpdateInterval
        << ", \"frames\": " << o.Frames << ", \"viewports\": " << o.Viewports
@@ -786,7 +788,8 @@ int main(int argc, char* argv[])
   std::cout << std::fixed << std::setprecision(2) << "\nmedian ms on " << RendererName(window)
             << ", " << o.Scene << " (" << actors.size() << " actors, " << triangles
             << " triangles) " << o.Width << "x" << o.Height << ", " << o.Resolution
-            << "^3 voxels, trace at " << o.TraceScale
+            << "^3 voxels, trace at " << o.TraceScale << " (halved above "
+            << gi->GetMaxTraceMegapixels() << " megapixels)"
             << (gi->GetSoftwareProfileActive() ? " (capped by the software profile)" : "") << ", " << window->GetMultiSamples()
             << "x MSAA, " << o.Frames << " frames, " << o.Viewports << " viewport(s)"
             << (o.SharedGrid ? " sharing one grid" : "") << ", voxel memory "
