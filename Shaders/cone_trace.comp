@@ -52,7 +52,7 @@ uniform sampler2D previousSurface;
 uniform mat4 previousGridFromNDC;
 uniform mat4 previousNDCFromGrid;
 uniform vec4 previousEye;          // grid coordinates (w 1) or direction of view (parallel, w 0)
-uniform int retracePass;           // 1: trace the listed pixels, 64 to a group
+uniform int retracePass;           // 1: trace the listed pixels, a group's worth to a group
 layout(std430, binding = VOXELGI_RETRACE_LIST_BINDING) buffer RetraceList
 {
   uint retraceDispatch[4]; // groups x, y, z of the second dispatch; pixels listed
@@ -228,12 +228,14 @@ vec3 occludedDirect(vec3 p, vec3 origin, vec3 n, vec3 viewDir, vec3 albedo, floa
   return occluded;
 }
 
-// Put the pixel on the list the second dispatch traces, counting its groups of 64.
+const uint groupSize = gl_WorkGroupSize.x * gl_WorkGroupSize.y;
+
+// Put the pixel on the list the second dispatch traces, counting its groups.
 void listForRetrace(ivec2 pixel)
 {
   uint i = atomicAdd(retraceDispatch[3], 1u);
   retracePixels[i] = uint(pixel.x) | (uint(pixel.y) << 16);
-  if ((i & 63u) == 0u)
+  if (i % groupSize == 0u)
   {
     atomicAdd(retraceDispatch[0], 1u);
   }
@@ -244,7 +246,7 @@ void main()
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   if (retracePass != 0)
   {
-    uint i = gl_WorkGroupID.x * 64u + gl_LocalInvocationIndex;
+    uint i = gl_WorkGroupID.x * groupSize + gl_LocalInvocationIndex;
     if (i >= retraceDispatch[3])
     {
       return;

@@ -22,7 +22,6 @@
 #include "vtkRenderer.h"
 
 #include <algorithm>
-#include <cmath>
 #include <cstdlib>
 #include <iostream>
 
@@ -66,27 +65,10 @@ void Compare(vtkVoxelGIPass* a, vtkVoxelGIPass* b, double& largest, double& mean
   vtkNew<vtkFloatArray> ia, ib;
   a->GetFloatImage(vtkVoxelGIPass::IMAGE_COMPOSITE, ia);
   b->GetFloatImage(vtkVoxelGIPass::IMAGE_COMPOSITE, ib);
-  largest = mean = over = 0.0;
-  const vtkIdType pixels = ia->GetNumberOfTuples();
-  if (pixels == 0 || pixels != ib->GetNumberOfTuples())
-  {
-    largest = mean = over = 1e30;
-    return;
-  }
-  for (vtkIdType p = 0; p < pixels; ++p)
-  {
-    double worst = 0.0;
-    for (int c = 0; c < 3; ++c)
-    {
-      const double d = std::abs(ia->GetComponent(p, c) - ib->GetComponent(p, c));
-      worst = std::max(worst, d);
-      mean += d / 3.0;
-    }
-    largest = std::max(largest, worst);
-    over += worst > 0.02 ? 1.0 : 0.0;
-  }
-  mean /= pixels;
-  over /= pixels;
+  const voxelgi_test::ImageDifference difference = voxelgi_test::Differences(ia, ib, 0.02);
+  largest = difference.Largest;
+  mean = difference.Mean;
+  over = difference.Over;
 }
 }
 

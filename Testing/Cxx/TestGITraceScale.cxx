@@ -11,8 +11,6 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 
-#include <algorithm>
-#include <cmath>
 #include <cstdlib>
 #include <iostream>
 
@@ -27,27 +25,6 @@ vtkSmartPointer<vtkFloatArray> Render(voxelgi_test::GIWindow& view, double resol
   return view.GI->GetGIActive() && voxelgi_test::AllFinite(view.GI)
     ? voxelgi_test::Composite(view.GI)
     : nullptr;
-}
-
-// Mean absolute difference (rgb), and the share of pixels that differ by more than 0.1.
-double MeanDifference(vtkFloatArray* a, vtkFloatArray* b, double& over)
-{
-  double sum = 0.0;
-  over = 0.0;
-  const vtkIdType pixels = a->GetNumberOfTuples();
-  for (vtkIdType p = 0; p < pixels; ++p)
-  {
-    double worst = 0.0;
-    for (int c = 0; c < 3; ++c)
-    {
-      const double d = std::abs(a->GetComponent(p, c) - b->GetComponent(p, c));
-      sum += d / 3.0;
-      worst = std::max(worst, d);
-    }
-    over += worst > 0.1 ? 1.0 : 0.0;
-  }
-  over /= std::max<vtkIdType>(pixels, 1);
-  return pixels > 0 ? sum / pixels : 1e30;
 }
 }
 
@@ -65,8 +42,9 @@ int TestGITraceScale(int, char*[])
   VOXELGI_CHECK(limited && half && full, "GI did not run or left non-finite values");
   const double halfDifference = voxelgi_test::MaxDifference(limited, half);
   const double fullDifference = voxelgi_test::MaxDifference(limited, full);
-  double over = 0.0;
-  const double fullMean = MeanDifference(limited, full, over);
+  const voxelgi_test::ImageDifference fromFull = voxelgi_test::Differences(limited, full, 0.1);
+  const double fullMean = fromFull.Mean;
+  const double over = fromFull.Over;
   std::cout << "1100 x 1000: largest difference to half the resolution " << halfDifference
             << ", to every pixel traced " << fullDifference << " (mean " << fullMean << ", "
             << 100.0 * over << " % of the pixels over 0.1)" << std::endl;

@@ -360,6 +360,32 @@ double MaxDifference(vtkDataArray* a, vtkDataArray* b)
   return d;
 }
 
+ImageDifference Differences(vtkDataArray* a, vtkDataArray* b, double threshold)
+{
+  ImageDifference difference;
+  const vtkIdType pixels = a && b ? a->GetNumberOfTuples() : 0;
+  if (pixels == 0 || pixels != b->GetNumberOfTuples())
+  {
+    difference.Largest = difference.Mean = difference.Over = 1e30;
+    return difference;
+  }
+  for (vtkIdType p = 0; p < pixels; ++p)
+  {
+    double worst = 0.0;
+    for (int c = 0; c < 3; ++c)
+    {
+      const double d = std::abs(a->GetComponent(p, c) - b->GetComponent(p, c));
+      worst = std::max(worst, d);
+      difference.Mean += d / 3.0;
+    }
+    difference.Largest = std::max(difference.Largest, worst);
+    difference.Over += worst > threshold ? 1.0 : 0.0;
+  }
+  difference.Mean /= pixels;
+  difference.Over /= pixels;
+  return difference;
+}
+
 std::string StagesRan(vtkVoxelGIPass* gi)
 {
   std::string ran;

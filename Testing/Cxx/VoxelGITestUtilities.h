@@ -55,6 +55,17 @@ vtkSmartPointer<vtkFloatArray> Composite(vtkVoxelGIPass* gi);
 /// their sizes differ).
 double MaxDifference(vtkDataArray* a, vtkDataArray* b);
 
+/// How two RGBA float images of the same size differ over rgb: the largest difference, the
+/// mean one and the share of pixels whose largest difference exceeds a threshold (all 1e30
+/// when either is empty or their sizes differ).
+struct ImageDifference
+{
+  double Largest = 0.0;
+  double Mean = 0.0;
+  double Over = 0.0;
+};
+ImageDifference Differences(vtkDataArray* a, vtkDataArray* b, double threshold);
+
 /// The stages `gi` ran in its last frame, by name, comma-separated.
 std::string StagesRan(vtkVoxelGIPass* gi);
 
