@@ -52,4 +52,11 @@
 /* Image units of the voxelization stage. */
 #define VOXELGI_FLAG_IMAGE_UNIT 0
 
+/* Image units of the G-buffer where VTK's own draw stores it (gbuffer_images.glsl). */
+#define VOXELGI_GBUFFER_DEPTH_UNIT 1
+#define VOXELGI_GBUFFER_COLOR_UNIT 2
+#define VOXELGI_GBUFFER_SURFACE_UNIT 3
+#define VOXELGI_GBUFFER_MATERIAL_UNIT 4
+#define VOXELGI_GBUFFER_AMBIENT_UNIT 5
+
 #endif

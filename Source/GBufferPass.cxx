@@ -5,6 +5,7 @@
 #include "SceneScan.h"
 #include "VoxelGIShaders.h"
 #include "StageIds.h"
+#include "shader_interface.h"
 
 #include "vtkActor.h"
 #include "vtkCameraPass.h"
@@ -18,9 +19,16 @@
 #include "vtkRenderPassCollection.h"
 #include "vtkRenderState.h"
 #include "vtkRenderStepsPass.h"
+#include "vtkRenderer.h"
 #include "vtkSequencePass.h"
 #include "vtkShaderProgram.h"
 #include "vtk_glew.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
 
 namespace voxelgi
 {
@@ -95,22 +103,30 @@ bool GBufferPass::Prepare(const Frame& frame, std::string&)
 {
   const int width = frame.Width;
   const int height = frame.Height;
-  if (!this->Framebuffer)
+  if (!this->Depth)
   {
     vtkOpenGLRenderWindow* renWin = frame.Window;
+    this->FromVTKDraw = StoresInDrawOrder();
     // The fewest bytes a pixel (gbuffer.frag, gbuffer_encoding.glsl): with few raster units
     // the G-buffer's time grows with them. VTK's colour keeps its alpha and half floats.
     this->Color = NewImageTexture(renWin, GL_RGBA16F, width, height);
     this->Normal = NewImageTexture(renWin, GL_RGB10_A2, width, height);
     this->Material = NewImageTexture(renWin, GL_RGBA8, width, height);
     this->Ambient = NewImageTexture(renWin, GL_R11F_G11F_B10F, width, height);
-    this->Depth = vtkSmartPointer<vtkTextureObject>::New();
-    this->Depth->SetContext(renWin);
-    this->Depth->SetMinificationFilter(vtkTextureObject::Nearest);
-    this->Depth->SetMagnificationFilter(vtkTextureObject::Nearest);
-    this->Depth->AllocateDepth(width, height, vtkTextureObject::Float32);
-    this->Framebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
-    this->Framebuffer->SetContext(renWin);
+    if (this->FromVTKDraw)
+    {
+      this->Depth = NewImageTexture(renWin, GL_R32F, width, height, 1);
+    }
+    else
+    {
+      this->Depth = vtkSmartPointer<vtkTextureObject>::New();
+      this->Depth->SetContext(renWin);
+      this->Depth->SetMinificationFilter(vtkTextureObject::Nearest);
+      this->Depth->SetMagnificationFilter(vtkTextureObject::Nearest);
+      this->Depth->AllocateDepth(width, height, vtkTextureObject::Float32);
+      this->Framebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+      this->Framebuffer->SetContext(renWin);
+    }
   }
   this->Color->Resize(width, height);
   this->Normal->Resize(width, height);
@@ -121,18 +137,96 @@ bool GBufferPass::Prepare(const Frame& frame, std::string&)
   return true;
 }
 
+void GBufferPass::FindCentralSamples()
+{
+  // The samples of the framebuffer VTK draws into nearest the pixel's centre (the standard
+  // patterns place two or four at the same distance around it).
+  GLint samples = 0;
+  glGetIntegerv(GL_SAMPLES, &samples);
+  std::array<float, 32> distance;
+  samples = std::min(std::max(samples, 1), static_cast<int>(distance.size()));
+  float nearest = 1.f;
+  for (int i = 0; i < samples; ++i)
+  {
+    GLfloat at[2] = { 0.5f, 0.5f };
+    if (samples > 1)
+    {
+      glGetMultisamplefv(GL_SAMPLE_POSITION, static_cast<GLuint>(i), at);
+    }
+    distance[i] = std::hypot(at[0] - 0.5f, at[1] - 0.5f);
+    nearest = std::min(nearest, distance[i]);
+  }
+  this->CentralSampleCount = 0;
+  for (int i = 0; i < samples && this->CentralSampleCount < 4; ++i)
+  {
+    if (distance[i] <= nearest + 1e-3f)
+    {
+      this->CentralSamples[this->CentralSampleCount++] = i;
+    }
+  }
+}
+
+bool GBufferPass::StoresInDrawOrder()
+{
+  // Mesa's software rasterizers shade each tile's fragments on one thread in draw order.
+  const std::string renderer = RendererName();
+  return HasExtension("GL_ARB_fragment_shader_interlock") ||
+    renderer.find("llvmpipe") != std::string::npos ||
+    renderer.find("softpipe") != std::string::npos;
+}
+
 //------------------------------------------------------------------------------
 void GBufferPass::Run(const Frame& frame)
 {
   ScopedStage stage(*frame.Clock, stage::GBuffer);
   this->SelectOpaque(frame);
-  this->Draw(frame, this->Framebuffer);
+  if (this->FromVTKDraw)
+  {
+    this->DrawWithVTK(frame);
+  }
+  else
+  {
+    this->Draw(frame, this->Framebuffer);
+  }
+}
+
+void GBufferPass::DrawWithVTK(const Frame& frame)
+{
+  // The depth starts at the far plane; the colour at the background, as VTK's clear leaves it
+  // where no surface is.
+  const float far[4] = { 1.f, 1.f, 1.f, 1.f };
+  glClearTexImage(this->Depth->GetHandle(), 0, GL_RED, GL_FLOAT, far);
+  const double* background = frame.Renderer->GetBackground();
+  const float color[4] = { static_cast<float>(background[0]), static_cast<float>(background[1]),
+    static_cast<float>(background[2]), static_cast<float>(frame.Renderer->GetBackgroundAlpha()) };
+  glClearTexImage(this->Color->GetHandle(), 0, GL_RGBA, GL_FLOAT, color);
+  BindImage2D(VOXELGI_GBUFFER_DEPTH_UNIT, this->Depth, GL_READ_WRITE, GL_R32F);
+  BindImage2D(VOXELGI_GBUFFER_COLOR_UNIT, this->Color, GL_WRITE_ONLY, GL_RGBA16F);
+  BindImage2D(VOXELGI_GBUFFER_SURFACE_UNIT, this->Normal, GL_WRITE_ONLY, GL_RGB10_A2);
+  BindImage2D(VOXELGI_GBUFFER_MATERIAL_UNIT, this->Material, GL_WRITE_ONLY, GL_RGBA8);
+  BindImage2D(VOXELGI_GBUFFER_AMBIENT_UNIT, this->Ambient, GL_WRITE_ONLY, GL_R11F_G11F_B10F);
+  this->Origin[0] = frame.X;
+  this->Origin[1] = frame.Y;
+  this->FindCentralSamples();
+  this->Draw(frame, nullptr);
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  this->DrawnIn = frame.RenderStarts[0];
+  this->Drawn = true;
 }
 
 int GBufferPass::RenderVTK(const Frame& frame)
 {
   this->SelectOpaque(frame);
-  this->Draw(frame, nullptr);
+  if (!this->FromVTKDraw)
+  {
+    this->Draw(frame, nullptr);
+  }
+  // Where VTK's draw stores the G-buffer, Run drew VTK's image already in this render.
+  else if (!(this->Drawn && this->DrawnIn == frame.RenderStarts[0]))
+  {
+    this->DrawWithVTK(frame);
+  }
+  this->Drawn = false;
   return this->GetNumberOfRenderedProps();
 }
 
@@ -246,6 +340,25 @@ void GBufferPass::End()
   this->Framebuffer->RestorePreviousBindingsAndBuffers();
 }
 
+namespace
+{
+/// Whether `fragment` discards only where VTK's shader tests its colour's alpha against zero.
+bool OnlyDiscardsZeroAlpha(const std::string& fragment)
+{
+  const std::string test = "gl_FragData[0].a <= 0.0";
+  for (std::size_t at = fragment.find("discard"); at != std::string::npos;
+       at = fragment.find("discard", at + 1))
+  {
+    const std::size_t before = at > 64 ? at - 64 : 0;
+    if (fragment.substr(before, at - before).find(test) == std::string::npos)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+}
+
 //------------------------------------------------------------------------------
 bool GBufferPass::ReplaceShaderValues(
   std::string&, std::string&, std::string& fragment, vtkAbstractMapper* mapper, vtkProp* prop)
@@ -271,6 +384,33 @@ bool GBufferPass::ReplaceShaderValues(
   {
     defines += "#define VOXELGI_HAS_AMBIENT\n";
   }
+  if (this->FromVTKDraw)
+  {
+    // Extensions before any declaration, VTK's included.
+    defines = std::string("#extension GL_ARB_shader_image_load_store : require\n"
+                          "#extension GL_ARB_shading_language_420pack : require\n"
+                          "#extension GL_ARB_gpu_shader5 : require\n"
+                          "#ifdef GL_ARB_fragment_shader_interlock\n"
+                          "#extension GL_ARB_fragment_shader_interlock : enable\n"
+                          "#endif\n"
+                          "#define VOXELGI_GBUFFER_IMAGES\n") +
+      defines + shaders::gbuffer_images_glsl;
+    // Sprites (spheres, tubes) set their depth: the G-buffer takes that one.
+    const bool setsDepth = fragment.find("gl_FragDepth =") != std::string::npos;
+    if (setsDepth)
+    {
+      defines += "#define VOXELGI_SETS_DEPTH\n";
+    }
+    // Fragments a nearer surface hides run no shader (with the stores, the GPU would run them
+    // all), unless the shader sets its depth or may discard a fragment of VTK's opaque pass
+    // (splats; the test of zero alpha discards nothing there, unless the actor is forced
+    // opaque), which must then not have written its depth.
+    vtkActor* opaque = vtkActor::SafeDownCast(prop);
+    if (!setsDepth && !(opaque && opaque->GetForceOpaque()) && OnlyDiscardsZeroAlpha(fragment))
+    {
+      defines += "layout(early_fragment_tests) in;\n";
+    }
+  }
   defines += "uniform float voxelgiOccludable;\n";
   vtkActor* actor = vtkActor::SafeDownCast(prop);
   if (!this->LitScene && actor && actor->GetProperty()->GetLighting())
@@ -291,7 +431,7 @@ bool GBufferPass::SetParameters(vtkShaderProgram* program, vtkAbstractMapper* ma
 {
   // Polydata mappers write all attachments, other mappers the colour and (SetDataBlending)
   // an empty surface. VTK's own framebuffer keeps its draw buffers: the data outputs go
-  // nowhere there.
+  // nowhere there (where its draw stores the G-buffer, they are images).
   const bool polyData = vtkOpenGLPolyDataMapper::SafeDownCast(mapper) != nullptr;
   if (this->IntoGBuffer)
   {
@@ -307,6 +447,12 @@ bool GBufferPass::SetParameters(vtkShaderProgram* program, vtkAbstractMapper* ma
     const bool unlit = property &&
       (!property->GetLighting() || (property->GetDiffuse() == 0.0 && property->GetSpecular() == 0.0));
     program->SetUniformf("voxelgiOccludable", unlit || Emits(PropEmission(prop)) ? 0.0f : 1.0f);
+    if (this->FromVTKDraw)
+    {
+      program->SetUniform2i("voxelgiOrigin", this->Origin);
+      program->SetUniform1iv("voxelgiCentralSamples", 4, this->CentralSamples);
+      program->SetUniformi("voxelgiCentralSampleCount", this->CentralSampleCount);
+    }
   }
   // Before every draw: VTK's state handling may have re-enabled blending for all buffers.
   if (this->IntoGBuffer)

@@ -1,13 +1,17 @@
 /**
  * GBuffer stage: an internal render pass in which VTK renders the frame's camera, lights and
- * opaque geometry (its own shading kept in attachment 0) into the pass's framebuffer at one
- * sample per pixel, while fragment code it injects into the polydata mappers (gbuffer.frag) adds
- * the surface, packed (the view-space normal, specular power and the pixel's kind; attachment 1,
- * gbuffer_encoding.glsl), the albedo and specular intensity (attachment 2) and the ambient term
- * (attachment 3); depth goes to a float texture (the vtkSSAOPass pattern). A delegate that is
- * not a vtkRenderStepsPass renders whole into attachment 0. The same pass draws VTK's own image
- * of those steps into the frame's framebuffer (RenderVTK), with the window's multisampling,
- * through the same shaders, so that a mapper keeps one shader program for both draws.
+ * opaque geometry through fragment code it injects into the polydata mappers (gbuffer.frag):
+ * besides VTK's shaded colour, the surface, packed (the view-space normal, specular power and
+ * the pixel's kind; gbuffer_encoding.glsl), the albedo and specular intensity and the ambient
+ * term, one sample a pixel, with a float depth. A delegate that is not a vtkRenderStepsPass
+ * renders whole. Two ways, chosen by what the GPU guarantees:
+ * - Where fragments of a pixel can store in draw order (a fragment-shader interlock, or a
+ *   rasterizer that shades each tile in order), VTK's own draw of its image, into the frame's
+ *   framebuffer with the window's multisampling, stores the G-buffer into images as it goes
+ *   (the nearest fragment of each pixel wins): the scene is drawn once.
+ * - Otherwise VTK draws the same steps twice: into the pass's framebuffer at one sample per
+ *   pixel (attachments 0-3, the vtkSSAOPass pattern; Run), and its own image (RenderVTK),
+ *   through the same shaders, so that a mapper keeps one shader program for both draws.
  */
 #ifndef VoxelGIGBufferPass_h
 #define VoxelGIGBufferPass_h
@@ -41,8 +45,11 @@ public:
   bool Prepare(const Frame& frame, std::string& error);
   /// Render the frame's opaque geometry into the G-buffer.
   void Run(const Frame& frame);
-  /// Render the same steps as VTK would into the frame's framebuffer; returns the props drawn.
+  /// Render the same steps as VTK would into the frame's framebuffer, unless Run did in this
+  /// render (FromVTKDraw); returns the props drawn.
   int RenderVTK(const Frame& frame);
+  /// Whether VTK's own draw of its image makes the G-buffer (Prepare decides).
+  bool IsFromVTKDraw() const { return this->FromVTKDraw; }
   /// Render the state's props through the delegate's opaque steps (Run sets up the state).
   void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* window) override;
@@ -78,6 +85,12 @@ private:
   void Begin();
   void End();
   static void SetDataBlending(bool polyData);
+  /// Whether the current context's fragments of one pixel can store in draw order.
+  static bool StoresInDrawOrder();
+  /// Clear and bind the G-buffer's images, and draw VTK's image into the frame's framebuffer.
+  void DrawWithVTK(const Frame& frame);
+  /// The current framebuffer's samples nearest the pixel's centre (CentralSamples).
+  void FindCentralSamples();
 
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
   vtkSmartPointer<vtkTextureObject> Color;
@@ -86,6 +99,12 @@ private:
   vtkSmartPointer<vtkTextureObject> Ambient;
   vtkSmartPointer<vtkTextureObject> Depth;
   bool IntoGBuffer = false; // Render() draws into the G-buffer, else into VTK's framebuffer
+  bool FromVTKDraw = false;
+  int Origin[2] = { 0, 0 };  // the viewport's origin in the window (gbuffer_images.glsl)
+  int CentralSamples[4] = { 0, 0, 0, 0 }; // of the framebuffer VTK draws into, and
+  int CentralSampleCount = 1;              // how many (FindCentralSamples)
+  bool Drawn = false;        // DrawWithVTK drew VTK's image in the render that started at
+  vtkMTimeType DrawnIn = 0;  // DrawnIn, and RenderVTK has not asked for it yet
   bool BlendWasEnabled[3] = { false, false, false };
   bool LitScene = true;
   vtkRenderPass* Opaque = nullptr; // what Render() runs this frame

@@ -772,7 +772,7 @@ vtkSmartPointer<vtkTextureObject> NewImageTexture(vtkOpenGLRenderWindow* renWin,
   auto texture = vtkSmartPointer<vtkTextureObject>::New();
   texture->SetContext(renWin);
   texture->SetInternalFormat(internalFormat);
-  texture->SetFormat(components == 2 ? GL_RG : GL_RGBA);
+  texture->SetFormat(components == 1 ? GL_RED : components == 2 ? GL_RG : GL_RGBA);
   texture->SetMinificationFilter(vtkTextureObject::Nearest);
   texture->SetMagnificationFilter(vtkTextureObject::Nearest);
   texture->SetWrapS(vtkTextureObject::ClampToEdge);

@@ -276,7 +276,7 @@ private:
 vtkShaderProgram* ReadyQuad(
   std::unique_ptr<vtkOpenGLQuadHelper>& quad, vtkOpenGLRenderWindow* renWin, const char* fragment);
 
-/// A 2D texture of `internalFormat` (float data, 4 or 2 components), nearest filtered, for
+/// A 2D texture of `internalFormat` (float data, 4, 2 or 1 components), nearest filtered, for
 /// image results.
 vtkSmartPointer<vtkTextureObject> NewImageTexture(vtkOpenGLRenderWindow* renWin,
   int internalFormat, int width, int height, int components = 4);

@@ -98,13 +98,14 @@ void Present::Run(const Frame& frame)
   }
   else
   {
-    // VTK's draw into a framebuffer of one sample would repeat the G-buffer's, unless it
-    // draws over colours it keeps (a renderer of a layer above another: its G-buffer holds no
-    // background).
+    // VTK's draw into a framebuffer of one sample would repeat a G-buffer drawn apart, unless
+    // it draws over colours it keeps (a renderer of a layer above another: its G-buffer holds
+    // no background). A G-buffer VTK's draw made comes with VTK's image.
     GLint samples = 0;
     glGetIntegerv(GL_SAMPLES, &samples);
-    const Mode mode =
-      samples > 1 || frame.Renderer->Transparent() ? Mode::Samples : Mode::Whole;
+    const Mode mode = this->GBuffer.IsFromVTKDraw() || samples > 1 || frame.Renderer->Transparent()
+      ? Mode::Samples
+      : Mode::Whole;
     this->OpaqueProps = mode == Mode::Samples ? this->GBuffer.RenderVTK(frame)
                                               : this->GBuffer.GetNumberOfRenderedProps();
     ScopedStage stage(*frame.Clock, stage::Present);

@@ -20,6 +20,7 @@
 #include "vtkPolyData.h"
 #include "vtkPropCollection.h"
 #include "vtkProperty.h"
+#include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkVolume.h"
 
@@ -536,6 +537,8 @@ std::vector<unsigned long long> SceneScan::ImageKey(
   int size[4];
   renderer->GetTiledSizeAndOrigin(size, size + 1, size + 2, size + 3);
   key.insert(key.end(), size, size + 4);
+  // The G-buffer takes a pixel's surface at one of its samples (GBufferPass).
+  key.push_back(static_cast<unsigned long long>(renderer->GetRenderWindow()->GetMultiSamples()));
   if (signatures && static_cast<int>(signatures->size()) != renderer->GetViewProps()->GetNumberOfItems())
   {
     signatures = nullptr;
