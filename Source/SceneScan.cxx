@@ -538,7 +538,8 @@ std::vector<unsigned long long> SceneScan::ImageKey(
   renderer->GetTiledSizeAndOrigin(size, size + 1, size + 2, size + 3);
   key.insert(key.end(), size, size + 4);
   // The G-buffer takes a pixel's surface at one of its samples (GBufferPass).
-  key.push_back(static_cast<unsigned long long>(renderer->GetRenderWindow()->GetMultiSamples()));
+  vtkRenderWindow* window = renderer->GetRenderWindow();
+  key.push_back(static_cast<unsigned long long>(window ? window->GetMultiSamples() : 0));
   if (signatures && static_cast<int>(signatures->size()) != renderer->GetViewProps()->GetNumberOfItems())
   {
     signatures = nullptr;
