@@ -5,9 +5,9 @@
 // that the composite builds on. Two ways (GBufferPass):
 // - VOXELGI_GBUFFER_IMAGES: VTK's own draw of its image, at the window's multisampling,
 //   stores them at one sample per pixel into images, with the depth of the pixel's centre: of
-//   the fragments covering a pixel's first sample the nearest wins, in the order VTK draws (a
-//   fragment-shader interlock, or a rasterizer that shades each pixel in draw order). No
-//   second draw of the scene.
+//   the fragments covering the pixel's sample nearest its centre the nearest wins, in the
+//   order VTK draws (a fragment-shader interlock, or a rasterizer that shades each pixel in
+//   draw order). No second draw of the scene.
 // - otherwise a draw of its own into a framebuffer of one sample: attachment 0 keeps VTK's
 //   colour, 1 the surface, 2 the material, 3 the ambient term (VTK's framebuffer has only
 //   attachment 0: the rest is dropped there).

@@ -27,8 +27,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdlib>
-#include <iostream>
 
 namespace voxelgi
 {
@@ -88,6 +86,22 @@ private:
   vtkTimeStamp ShaderStageTime;
 };
 vtkStandardNewMacro(GBufferShaders);
+
+/// Whether `fragment` discards only where VTK's shader tests its colour's alpha against zero.
+bool OnlyDiscardsZeroAlpha(const std::string& fragment)
+{
+  const std::string test = "gl_FragData[0].a <= 0.0";
+  for (std::size_t at = fragment.find("discard"); at != std::string::npos;
+       at = fragment.find("discard", at + 1))
+  {
+    const std::size_t before = at > 64 ? at - 64 : 0;
+    if (fragment.substr(before, at - before).find(test) == std::string::npos)
+    {
+      return false;
+    }
+  }
+  return true;
+}
 }
 
 vtkStandardNewMacro(GBufferPass);
@@ -351,24 +365,6 @@ void GBufferPass::End()
   this->Framebuffer->RestorePreviousBindingsAndBuffers();
 }
 
-namespace
-{
-/// Whether `fragment` discards only where VTK's shader tests its colour's alpha against zero.
-bool OnlyDiscardsZeroAlpha(const std::string& fragment)
-{
-  const std::string test = "gl_FragData[0].a <= 0.0";
-  for (std::size_t at = fragment.find("discard"); at != std::string::npos;
-       at = fragment.find("discard", at + 1))
-  {
-    const std::size_t before = at > 64 ? at - 64 : 0;
-    if (fragment.substr(before, at - before).find(test) == std::string::npos)
-    {
-      return false;
-    }
-  }
-  return true;
-}
-}
 
 //------------------------------------------------------------------------------
 bool GBufferPass::ReplaceShaderValues(
@@ -395,6 +391,7 @@ bool GBufferPass::ReplaceShaderValues(
   {
     defines += "#define VOXELGI_HAS_AMBIENT\n";
   }
+  vtkActor* actor = vtkActor::SafeDownCast(prop);
   if (this->FromVTKDraw)
   {
     // Extensions before any declaration, VTK's included.
@@ -416,14 +413,12 @@ bool GBufferPass::ReplaceShaderValues(
     // all), unless the shader sets its depth or may discard a fragment of VTK's opaque pass
     // (splats; the test of zero alpha discards nothing there, unless the actor is forced
     // opaque), which must then not have written its depth.
-    vtkActor* opaque = vtkActor::SafeDownCast(prop);
-    if (!setsDepth && !(opaque && opaque->GetForceOpaque()) && OnlyDiscardsZeroAlpha(fragment))
+    if (!setsDepth && !(actor && actor->GetForceOpaque()) && OnlyDiscardsZeroAlpha(fragment))
     {
       defines += "layout(early_fragment_tests) in;\n";
     }
   }
   defines += "uniform float voxelgiOccludable;\n";
-  vtkActor* actor = vtkActor::SafeDownCast(prop);
   if (!this->LitScene && actor && actor->GetProperty()->GetLighting())
   {
     defines += "#define VOXELGI_AMBIENT_ONLY\n";
