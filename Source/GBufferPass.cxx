@@ -49,13 +49,12 @@ public:
     return shared;
   }
   /// Draw for `gbuffer` into the state's props (PreRender), or stop (PostRender).
-  void Begin(GBufferPass* gbuffer, bool litScene, bool images, const vtkRenderState* s)
+  void Begin(GBufferPass* gbuffer, bool litScene, const vtkRenderState* s)
   {
-    if (litScene != this->LitScene || images != this->Images)
+    if (litScene != this->LitScene)
     {
       this->LitScene = litScene;
-      this->Images = images;
-      this->ShaderStageTime.Modified(); // gbuffer.frag depends on them
+      this->ShaderStageTime.Modified(); // gbuffer.frag depends on it
     }
     this->Drawing = gbuffer;
     this->PreRender(s);
@@ -82,7 +81,6 @@ public:
 private:
   GBufferPass* Drawing = nullptr;
   bool LitScene = true;
-  bool Images = false;
   vtkTimeStamp ShaderStageTime;
 };
 vtkStandardNewMacro(GBufferShaders);
@@ -119,19 +117,10 @@ bool GBufferPass::Prepare(const Frame& frame, std::string&)
 {
   const int width = frame.Width;
   const int height = frame.Height;
-  if (this->DrawOrder < 0)
-  {
-    this->DrawOrder = StoresInDrawOrder() ? 1 : 0;
-  }
-  const bool fromVTKDraw = frame.Config.GBufferFromVTKDraw && this->DrawOrder == 1;
-  if (this->Depth && fromVTKDraw != this->FromVTKDraw)
-  {
-    this->ReleaseGraphicsResources(frame.Window);
-  }
   if (!this->Depth)
   {
     vtkOpenGLRenderWindow* renWin = frame.Window;
-    this->FromVTKDraw = fromVTKDraw;
+    this->FromVTKDraw = StoresInDrawOrder();
     // The fewest bytes a pixel (gbuffer.frag, gbuffer_encoding.glsl): with few raster units
     // the G-buffer's time grows with them. VTK's colour keeps its alpha and half floats.
     this->Color = NewImageTexture(renWin, GL_RGBA16F, width, height);
@@ -286,7 +275,7 @@ void GBufferPass::Render(const vtkRenderState* s)
 {
   this->NumberOfRenderedProps = 0;
   GBufferShaders* shaders = GBufferShaders::Get();
-  shaders->Begin(this, this->LitScene, this->FromVTKDraw, s);
+  shaders->Begin(this, this->LitScene, s);
   if (this->IntoGBuffer)
   {
     this->Begin();
@@ -484,7 +473,6 @@ void GBufferPass::ReleaseGraphicsResources(vtkWindow* window)
     this->Framebuffer->ReleaseGraphicsResources(window);
   }
   this->Framebuffer = nullptr;
-  this->DrawOrder = -1;
   this->Color = this->Normal = this->Material = this->Ambient = this->Depth = nullptr;
 }
 

@@ -4,7 +4,7 @@
  * besides VTK's shaded colour, the surface, packed (the view-space normal, specular power and
  * the pixel's kind; gbuffer_encoding.glsl), the albedo and specular intensity and the ambient
  * term, one sample a pixel, with a float depth. A delegate that is not a vtkRenderStepsPass
- * renders whole. Two ways, chosen by what the GPU guarantees (and GBufferFromVTKDraw):
+ * renders whole. Two ways, chosen by what the GPU guarantees:
  * - Where fragments of a pixel can store in draw order (a fragment-shader interlock, or a
  *   rasterizer that shades each tile in order), VTK's own draw of its image, into the frame's
  *   framebuffer with the window's multisampling, stores the G-buffer into images as it goes
@@ -48,8 +48,7 @@ public:
   /// Render the same steps as VTK would into the frame's framebuffer, unless Run did in this
   /// render (FromVTKDraw); returns the props drawn.
   int RenderVTK(const Frame& frame);
-  /// Whether VTK's own draw of its image makes the G-buffer (Prepare decides: the setting
-  /// GBufferFromVTKDraw, where the context stores in draw order).
+  /// Whether VTK's own draw of its image makes the G-buffer (Prepare decides).
   bool IsFromVTKDraw() const { return this->FromVTKDraw; }
   /// Render the state's props through the delegate's opaque steps (Run sets up the state).
   void Render(const vtkRenderState* s) override;
@@ -101,7 +100,6 @@ private:
   vtkSmartPointer<vtkTextureObject> Depth;
   bool IntoGBuffer = false; // Render() draws into the G-buffer, else into VTK's framebuffer
   bool FromVTKDraw = false;
-  int DrawOrder = -1; // whether the context stores in draw order (-1: not asked yet)
   int Origin[2] = { 0, 0 };  // the viewport's origin in the window (gbuffer_images.glsl)
   int CentralSamples[4] = { 0, 0, 0, 0 }; // of the framebuffer VTK draws into, and
   int CentralSampleCount = 1;              // how many (FindCentralSamples)

@@ -415,39 +415,6 @@ const voxelgi_test::Cases& Cases()
         VOXELGI_CHECK(!box.GI->GetGIActive(), "active in a render after the pass was removed");
         return EXIT_SUCCESS;
       } },
-    { "GBufferDrawnApart",
-      [] {
-        // The G-buffer drawn apart (GBufferFromVTKDraw off, as on GPUs without an
-        // interlock) and stored by VTK's own draw give the same image in a window of one
-        // sample (both take each pixel's centre), and switching redraws at once.
-        Box box;
-        box.Window->SetMultiSamples(0);
-        vtkNew<vtkUnsignedCharArray> stored, apart, back;
-        box.Window->Render();
-        box.Window->GetRGBACharPixelData(0, 0, 79, 79, 0, stored);
-        box.GI->SetGBufferFromVTKDraw(0);
-        box.Window->Render();
-        VOXELGI_CHECK(box.GI->GetGIActive(), "no GI with the G-buffer drawn apart");
-        box.Window->GetRGBACharPixelData(0, 0, 79, 79, 0, apart);
-        box.GI->SetGBufferFromVTKDraw(1);
-        box.Window->Render();
-        box.Window->GetRGBACharPixelData(0, 0, 79, 79, 0, back);
-        const double d = MaxDifference(stored, apart);
-        const double e = MaxDifference(stored, back);
-        std::cout << "drawn apart against stored by VTK's draw: largest difference " << d
-                  << "; stored again " << e << std::endl;
-        VOXELGI_CHECK(d <= 2.0 && e <= 2.0, "the two ways differ");
-        // Without GI's terms a stale or empty G-buffer would show as VTK's plain image: the
-        // box's GI must be there.
-        box.GI->SetEnabled(0);
-        box.Window->Render();
-        vtkNew<vtkUnsignedCharArray> plain;
-        box.Window->GetRGBACharPixelData(0, 0, 79, 79, 0, plain);
-        const double gi = MaxDifference(stored, plain);
-        std::cout << "GI against plain VTK: largest difference " << gi << std::endl;
-        VOXELGI_CHECK(gi > 20.0, "GI changed nothing: nothing measured");
-        return EXIT_SUCCESS;
-      } },
     { "MultiSamplesFollowTheWindow",
       [] {
         // Changing only the window's MultiSamples: every frame equals a fresh window's.
