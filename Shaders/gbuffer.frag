@@ -53,12 +53,10 @@
     beginInvocationInterlockARB();
 #endif
     // The fragment that covers the pixel's sample nearest its centre, as a draw at one
-    // sample per pixel takes the one covering the centre: where several are as near, a
-    // different one in each pixel of a 2 x 2 block, so that the choice leans no way.
-    int voxelgiCentral = voxelgiCentralSampleCount == 2
-      ? (voxelgiPixel.x + voxelgiPixel.y) & 1
-      : ((voxelgiPixel.x & 1) + 2 * (voxelgiPixel.y & 1)) % voxelgiCentralSampleCount;
-    int voxelgiSample = voxelgiCentralSamples[voxelgiCentral];
+    // sample per pixel takes the one covering the centre. The same sample in every pixel:
+    // where pixels took different ones, an edge between surfaces of different light was
+    // dotted (Present gives a pixel's samples the light of its surface).
+    int voxelgiSample = voxelgiCentralSample;
 #ifdef VOXELGI_SETS_DEPTH
     float voxelgiDepth = gl_FragDepth;
 #else

@@ -8,10 +8,8 @@ layout(binding = VOXELGI_GBUFFER_SURFACE_UNIT, rgb10_a2) writeonly uniform image
 layout(binding = VOXELGI_GBUFFER_MATERIAL_UNIT, rgba8) writeonly uniform image2D gbufferMaterialImage;
 layout(binding = VOXELGI_GBUFFER_AMBIENT_UNIT, r11f_g11f_b10f) writeonly uniform image2D gbufferAmbientImage;
 uniform ivec2 voxelgiOrigin;
-// The framebuffer's samples nearest the pixel's centre (two or four of the same distance in
-// the standard patterns; the only one without multisampling).
-uniform int voxelgiCentralSamples[4];
-uniform int voxelgiCentralSampleCount;
+// The framebuffer's sample nearest the pixel's centre (the only one without multisampling).
+uniform int voxelgiCentralSample;
 #ifdef GL_ARB_fragment_shader_interlock
 // Only fragments that share a sample wait for each other (adjacent triangles do not).
 layout(sample_interlock_ordered) in;

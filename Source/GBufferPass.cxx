@@ -24,9 +24,8 @@
 #include "vtkShaderProgram.h"
 #include "vtk_glew.h"
 
-#include <algorithm>
-#include <array>
 #include <cmath>
+#include <vector>
 
 namespace voxelgi
 {
@@ -49,12 +48,13 @@ public:
     return shared;
   }
   /// Draw for `gbuffer` into the state's props (PreRender), or stop (PostRender).
-  void Begin(GBufferPass* gbuffer, bool litScene, const vtkRenderState* s)
+  void Begin(GBufferPass* gbuffer, bool litScene, bool fromVTKDraw, const vtkRenderState* s)
   {
-    if (litScene != this->LitScene)
+    if (litScene != this->LitScene || fromVTKDraw != this->FromVTKDraw)
     {
       this->LitScene = litScene;
-      this->ShaderStageTime.Modified(); // gbuffer.frag depends on it
+      this->FromVTKDraw = fromVTKDraw;
+      this->ShaderStageTime.Modified(); // gbuffer.frag depends on both
     }
     this->Drawing = gbuffer;
     this->PreRender(s);
@@ -81,6 +81,7 @@ public:
 private:
   GBufferPass* Drawing = nullptr;
   bool LitScene = true;
+  bool FromVTKDraw = false;
   vtkTimeStamp ShaderStageTime;
 };
 vtkStandardNewMacro(GBufferShaders);
@@ -113,14 +114,28 @@ GBufferPass::GBufferPass()
 GBufferPass::~GBufferPass() = default;
 
 //------------------------------------------------------------------------------
-bool GBufferPass::Prepare(const Frame& frame, std::string&)
+bool GBufferPass::Prepare(const Frame& frame, std::string& error)
 {
   const int width = frame.Width;
   const int height = frame.Height;
+  // VTK's own draw makes the G-buffer where its fragments store in draw order and one of the
+  // framebuffer's samples lies near each pixel's centre (NVIDIA's 8x: 0.2 pixels). Patterns
+  // without one (4x and 2x: 0.35-0.4 pixels) would lean every surface's edge that far, or, a
+  // different sample in neighbouring pixels, dot the edges: there VTK draws twice.
+  if (this->InDrawOrder < 0)
+  {
+    this->InDrawOrder = StoresInDrawOrder() ? 1 : 0;
+  }
+  const bool fromVTKDraw =
+    this->InDrawOrder == 1 && this->FindCentralSample() <= MaxCentralSampleDistance;
+  if (this->Depth && fromVTKDraw != this->FromVTKDraw)
+  {
+    this->ReleaseGraphicsResources(frame.Window);
+  }
   if (!this->Depth)
   {
     vtkOpenGLRenderWindow* renWin = frame.Window;
-    this->FromVTKDraw = StoresInDrawOrder();
+    this->FromVTKDraw = fromVTKDraw;
     // The fewest bytes a pixel (gbuffer.frag, gbuffer_encoding.glsl): with few raster units
     // the G-buffer's time grows with them. VTK's colour keeps its alpha and half floats.
     this->Color = NewImageTexture(renWin, GL_RGBA16F, width, height);
@@ -148,36 +163,47 @@ bool GBufferPass::Prepare(const Frame& frame, std::string&)
   this->Ambient->Resize(width, height);
   this->Depth->Resize(width, height);
   this->LitScene = frame.LitScene;
-  return true;
+  return !this->FromVTKDraw ||
+    this->Clear.BuildOnce(shaders::gbuffer_clear_comp, "G-buffer clear", error);
 }
 
-void GBufferPass::FindCentralSamples()
+int CentralSample(const float* positions, int count, float& distance)
 {
-  // The samples of the framebuffer VTK draws into nearest the pixel's centre (the standard
-  // patterns place two or four at the same distance around it).
+  // Of the samples nearest the centre (the standard patterns place two or four at the same
+  // distance around it), the first: where neighbouring pixels took different ones, an edge
+  // between surfaces of different light was dotted (Present gives a pixel's samples the
+  // light of its surface).
+  int central = 0;
+  distance = 1.f;
+  for (int i = 0; i < count; ++i)
+  {
+    const float d = std::hypot(positions[2 * i] - 0.5f, positions[2 * i + 1] - 0.5f);
+    if (d < distance - 1e-3f)
+    {
+      distance = d;
+      central = i;
+    }
+  }
+  return central;
+}
+
+float GBufferPass::FindCentralSample()
+{
   GLint samples = 0;
   glGetIntegerv(GL_SAMPLES, &samples);
-  std::array<float, 32> distance;
-  samples = std::min(std::max(samples, 1), static_cast<int>(distance.size()));
-  float nearest = 1.f;
+  this->CentralSample = 0;
+  if (samples <= 1)
+  {
+    return 0.f;
+  }
+  std::vector<float> positions(2 * static_cast<std::size_t>(samples));
   for (int i = 0; i < samples; ++i)
   {
-    GLfloat at[2] = { 0.5f, 0.5f };
-    if (samples > 1)
-    {
-      glGetMultisamplefv(GL_SAMPLE_POSITION, static_cast<GLuint>(i), at);
-    }
-    distance[i] = std::hypot(at[0] - 0.5f, at[1] - 0.5f);
-    nearest = std::min(nearest, distance[i]);
+    glGetMultisamplefv(GL_SAMPLE_POSITION, static_cast<GLuint>(i), &positions[2 * i]);
   }
-  this->CentralSampleCount = 0;
-  for (int i = 0; i < samples && this->CentralSampleCount < 4; ++i)
-  {
-    if (distance[i] <= nearest + 1e-3f)
-    {
-      this->CentralSamples[this->CentralSampleCount++] = i;
-    }
-  }
+  float distance = 0.f;
+  this->CentralSample = voxelgi::CentralSample(positions.data(), samples, distance);
+  return distance;
 }
 
 bool GBufferPass::StoresInDrawOrder()
@@ -206,22 +232,22 @@ void GBufferPass::Run(const Frame& frame)
 
 void GBufferPass::DrawWithVTK(const Frame& frame)
 {
-  // The depth starts at the far plane; the colour at the background, as VTK's clear leaves it
-  // where no surface is.
-  const float far[4] = { 1.f, 1.f, 1.f, 1.f };
-  glClearTexImage(this->Depth->GetHandle(), 0, GL_RED, GL_FLOAT, far);
-  const double* background = frame.Renderer->GetBackground();
-  const float color[4] = { static_cast<float>(background[0]), static_cast<float>(background[1]),
-    static_cast<float>(background[2]), static_cast<float>(frame.Renderer->GetBackgroundAlpha()) };
-  glClearTexImage(this->Color->GetHandle(), 0, GL_RGBA, GL_FLOAT, color);
   BindImage2D(VOXELGI_GBUFFER_DEPTH_UNIT, this->Depth, GL_READ_WRITE, GL_R32F);
   BindImage2D(VOXELGI_GBUFFER_COLOR_UNIT, this->Color, GL_WRITE_ONLY, GL_RGBA16F);
   BindImage2D(VOXELGI_GBUFFER_SURFACE_UNIT, this->Normal, GL_WRITE_ONLY, GL_RGB10_A2);
   BindImage2D(VOXELGI_GBUFFER_MATERIAL_UNIT, this->Material, GL_WRITE_ONLY, GL_RGBA8);
   BindImage2D(VOXELGI_GBUFFER_AMBIENT_UNIT, this->Ambient, GL_WRITE_ONLY, GL_R11F_G11F_B10F);
+  // The depth starts at the far plane; the colour at the background, as VTK's clear leaves it
+  // where no surface is.
+  const double* background = frame.Renderer->GetBackground();
+  const float color[4] = { static_cast<float>(background[0]), static_cast<float>(background[1]),
+    static_cast<float>(background[2]), static_cast<float>(frame.Renderer->GetBackgroundAlpha()) };
+  this->Clear.Use(frame.Window);
+  this->Clear.SetVec4("background", color);
+  this->Clear.DispatchImage(frame.Width, frame.Height, 8);
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   this->Origin[0] = frame.X;
   this->Origin[1] = frame.Y;
-  this->FindCentralSamples();
   this->Draw(frame, nullptr);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   this->DrawnIn = frame.RenderStarts[0];
@@ -275,7 +301,7 @@ void GBufferPass::Render(const vtkRenderState* s)
 {
   this->NumberOfRenderedProps = 0;
   GBufferShaders* shaders = GBufferShaders::Get();
-  shaders->Begin(this, this->LitScene, s);
+  shaders->Begin(this, this->LitScene, this->FromVTKDraw, s);
   if (this->IntoGBuffer)
   {
     this->Begin();
@@ -445,8 +471,7 @@ bool GBufferPass::SetParameters(vtkShaderProgram* program, vtkAbstractMapper* ma
     if (this->FromVTKDraw)
     {
       program->SetUniform2i("voxelgiOrigin", this->Origin);
-      program->SetUniform1iv("voxelgiCentralSamples", 4, this->CentralSamples);
-      program->SetUniformi("voxelgiCentralSampleCount", this->CentralSampleCount);
+      program->SetUniformi("voxelgiCentralSample", this->CentralSample);
     }
   }
   // Before every draw: VTK's state handling may have re-enabled blending for all buffers.
@@ -473,6 +498,7 @@ void GBufferPass::ReleaseGraphicsResources(vtkWindow* window)
     this->Framebuffer->ReleaseGraphicsResources(window);
   }
   this->Framebuffer = nullptr;
+  this->Clear.Release();
   this->Color = this->Normal = this->Material = this->Ambient = this->Depth = nullptr;
 }
 

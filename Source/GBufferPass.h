@@ -6,9 +6,10 @@
  * term, one sample a pixel, with a float depth. A delegate that is not a vtkRenderStepsPass
  * renders whole. Two ways, chosen by what the GPU guarantees:
  * - Where fragments of a pixel can store in draw order (a fragment-shader interlock, or a
- *   rasterizer that shades each tile in order), VTK's own draw of its image, into the frame's
- *   framebuffer with the window's multisampling, stores the G-buffer into images as it goes
- *   (the nearest fragment of each pixel wins): the scene is drawn once.
+ *   rasterizer that shades each tile in order) and the framebuffer has a sample near each
+ *   pixel's centre (one sample, or NVIDIA's 8x), VTK's own draw of its image, into the
+ *   frame's framebuffer with the window's multisampling, stores the G-buffer into images as
+ *   it goes (the nearest fragment covering that sample wins): the scene is drawn once.
  * - Otherwise VTK draws the same steps twice: into the pass's framebuffer at one sample per
  *   pixel (attachments 0-3, the vtkSSAOPass pattern; Run), and its own image (RenderVTK),
  *   through the same shaders, so that a mapper keeps one shader program for both draws.
@@ -16,6 +17,7 @@
 #ifndef VoxelGIGBufferPass_h
 #define VoxelGIGBufferPass_h
 
+#include "GLHelpers.h"           // for GLProgram
 #include "vtkNew.h"              // for vtkNew
 #include "vtkRenderPass.h"       // for the superclass
 #include "vtkSmartPointer.h"     // for vtkSmartPointer
@@ -33,6 +35,13 @@ class vtkShaderProgram;
 
 namespace voxelgi
 {
+
+/// Of `count` sample positions (x, y pairs within the pixel, from 0 to 1), the first of those
+/// nearest the pixel's centre; `distance` says how far from it, in pixels. GL-free.
+int CentralSample(const float* positions, int count, float& distance);
+/// The farthest the central sample may lie from the centre for VTK's own draw to make the
+/// G-buffer (GBufferPass::Prepare).
+constexpr float MaxCentralSampleDistance = 0.25f;
 struct Frame;
 
 class GBufferPass : public vtkRenderPass
@@ -89,10 +98,12 @@ private:
   static bool StoresInDrawOrder();
   /// Clear and bind the G-buffer's images, and draw VTK's image into the frame's framebuffer.
   void DrawWithVTK(const Frame& frame);
-  /// The current framebuffer's samples nearest the pixel's centre (CentralSamples).
-  void FindCentralSamples();
+  /// The current framebuffer's sample nearest the pixel's centre (CentralSample); returns
+  /// its distance from the centre in pixels.
+  float FindCentralSample();
 
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
+  GLProgram Clear; // the images VTK's draw stores into (gbuffer_clear.comp)
   vtkSmartPointer<vtkTextureObject> Color;
   vtkSmartPointer<vtkTextureObject> Normal;
   vtkSmartPointer<vtkTextureObject> Material;
@@ -100,9 +111,9 @@ private:
   vtkSmartPointer<vtkTextureObject> Depth;
   bool IntoGBuffer = false; // Render() draws into the G-buffer, else into VTK's framebuffer
   bool FromVTKDraw = false;
+  int InDrawOrder = -1; // whether fragments store in draw order (-1: not asked yet)
   int Origin[2] = { 0, 0 };  // the viewport's origin in the window (gbuffer_images.glsl)
-  int CentralSamples[4] = { 0, 0, 0, 0 }; // of the framebuffer VTK draws into, and
-  int CentralSampleCount = 1;              // how many (FindCentralSamples)
+  int CentralSample = 0; // of the framebuffer VTK draws into (FindCentralSample)
   bool Drawn = false;        // DrawWithVTK drew VTK's image in the render that started at
   vtkMTimeType DrawnIn = 0;  // DrawnIn, and RenderVTK has not asked for it yet
   bool BlendWasEnabled[3] = { false, false, false };

@@ -273,7 +273,7 @@ int TestStageSkipping(int, char*[])
     // Same bounds, so the grid stays. The changed glyph actor turns dynamic, and a dynamic
     // prop leaves the voxels it shares with static ones (the floor under the glyphs) to
     // them, where a fresh pass, to which the glyphs are static, averages both colours: the
-    // image within 0.0033 (a stale glyph would differ by its whole light).
+    // image within 0.0036 (a stale glyph would differ by its whole light).
     { "glyph source changed", [&] { glyphSource->SetXLength(0.2); }, Full, 4e-3 },
   };
   for (const Case& c : cases)
