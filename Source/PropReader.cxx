@@ -40,10 +40,6 @@
 namespace voxelgi
 {
 
-namespace
-{
-/// Whether `data` (a polydata, or a composite of them) holds no polygons or strips, only
-/// vertices and lines; other datasets have surfaces.
 bool PointsAndLinesOnly(vtkDataObject* data)
 {
   if (auto* poly = vtkPolyData::SafeDownCast(data))
@@ -67,6 +63,8 @@ bool PointsAndLinesOnly(vtkDataObject* data)
   return true;
 }
 
+namespace
+{
 /// Why an actor drawing `data` with `property` shows no area to voxelize (null: it does,
 /// or it draws plain points and lines, also as a wireframe, which take no light worth a notice): points and
 /// wireframes, and points and lines drawn as imposter spheres and tubes (no triangles).

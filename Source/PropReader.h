@@ -18,11 +18,16 @@
 #include <vector>
 
 class vtkActor;
+class vtkDataObject;
 class vtkProp;
 class vtkRenderer;
 
 namespace voxelgi
 {
+
+/// Whether `data` (a polydata, or a composite of them) holds no polygons or strips, only
+/// vertices and lines; other datasets have surfaces.
+bool PointsAndLinesOnly(vtkDataObject* data);
 
 /// What the scan reads of one view prop.
 struct PropReading

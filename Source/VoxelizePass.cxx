@@ -1,12 +1,14 @@
 #include "VoxelizePass.h"
 
 #include "Frame.h"
+#include "PropReader.h"
 #include "Ranks.h"
 #include "VoxelGIShaders.h"
 #include "StageIds.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkMapper.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -378,8 +380,14 @@ void VoxelizePass::Render(const vtkRenderState* s)
   this->BindAccumulators();
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
-    this->NumberOfRenderedProps +=
-      this->Copies.Draw(vtkActor::SafeDownCast(s->GetPropArray()[i]), s->GetRenderer());
+    // Points and lines alone (ParaView's outline, streamlines drawn as lines) have no area to
+    // voxelize, and voxelize.geom takes triangles: drawn, they raise GL_INVALID_OPERATION.
+    vtkActor* actor = vtkActor::SafeDownCast(s->GetPropArray()[i]);
+    if (actor && actor->GetMapper() &&
+      !PointsAndLinesOnly(actor->GetMapper()->GetInputDataObject(0, 0)))
+    {
+      this->NumberOfRenderedProps += this->Copies.Draw(actor, s->GetRenderer());
+    }
   }
   this->PostRender(s);
 }
