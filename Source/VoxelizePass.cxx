@@ -8,11 +8,12 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
-#include "vtkMapper.h"
+#include "vtkDataObject.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
+#include "vtkPolyDataMapper.h"
 #include "vtkProp.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
@@ -373,6 +374,22 @@ void VoxelizePass::Draw(const Frame& frame, std::vector<vtkProp*>& props,
   Barrier();
 }
 
+namespace
+{
+/// Whether `actor` draws points or lines alone (ParaView's outline, streamlines drawn as
+/// lines): a polydata mapper (a glyph mapper's input is its instances' points) whose input
+/// has cells, none of them polygons or strips (an input its pipeline has not yet filled is
+/// drawn). They have no area to voxelize, and voxelize.geom takes triangles: drawn, they
+/// raise GL_INVALID_OPERATION.
+bool DrawsPointsAndLinesOnly(vtkActor* actor)
+{
+  auto* mapper = vtkPolyDataMapper::SafeDownCast(actor->GetMapper());
+  vtkDataObject* input = mapper ? mapper->GetInputDataObject(0, 0) : nullptr;
+  return input && input->GetNumberOfElements(vtkDataObject::CELL) > 0 &&
+    PointsAndLinesOnly(input);
+}
+}
+
 void VoxelizePass::Render(const vtkRenderState* s)
 {
   this->NumberOfRenderedProps = 0;
@@ -380,11 +397,8 @@ void VoxelizePass::Render(const vtkRenderState* s)
   this->BindAccumulators();
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
-    // Points and lines alone (ParaView's outline, streamlines drawn as lines) have no area to
-    // voxelize, and voxelize.geom takes triangles: drawn, they raise GL_INVALID_OPERATION.
     vtkActor* actor = vtkActor::SafeDownCast(s->GetPropArray()[i]);
-    if (actor && actor->GetMapper() &&
-      !PointsAndLinesOnly(actor->GetMapper()->GetInputDataObject(0, 0)))
+    if (actor && actor->GetMapper() && !DrawsPointsAndLinesOnly(actor))
     {
       this->NumberOfRenderedProps += this->Copies.Draw(actor, s->GetRenderer());
     }
