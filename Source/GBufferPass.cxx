@@ -189,21 +189,27 @@ int CentralSample(const float* positions, int count, float& distance)
 
 float GBufferPass::FindCentralSample()
 {
+  // The positions are asked for again only when the framebuffer's sample count changes.
   GLint samples = 0;
   glGetIntegerv(GL_SAMPLES, &samples);
+  if (samples == this->Samples)
+  {
+    return this->CentralDistance;
+  }
+  this->Samples = samples;
   this->CentralSample = 0;
-  if (samples <= 1)
+  this->CentralDistance = 0.f;
+  if (samples > 1)
   {
-    return 0.f;
+    std::vector<float> positions(2 * static_cast<std::size_t>(samples));
+    for (int i = 0; i < samples; ++i)
+    {
+      glGetMultisamplefv(GL_SAMPLE_POSITION, static_cast<GLuint>(i), &positions[2 * i]);
+    }
+    this->CentralSample =
+      voxelgi::CentralSample(positions.data(), samples, this->CentralDistance);
   }
-  std::vector<float> positions(2 * static_cast<std::size_t>(samples));
-  for (int i = 0; i < samples; ++i)
-  {
-    glGetMultisamplefv(GL_SAMPLE_POSITION, static_cast<GLuint>(i), &positions[2 * i]);
-  }
-  float distance = 0.f;
-  this->CentralSample = voxelgi::CentralSample(positions.data(), samples, distance);
-  return distance;
+  return this->CentralDistance;
 }
 
 bool GBufferPass::StoresInDrawOrder()
@@ -499,6 +505,7 @@ void GBufferPass::ReleaseGraphicsResources(vtkWindow* window)
   }
   this->Framebuffer = nullptr;
   this->Clear.Release();
+  this->Samples = -1; // another window's framebuffer may place its samples elsewhere
   this->Color = this->Normal = this->Material = this->Ambient = this->Depth = nullptr;
 }
 

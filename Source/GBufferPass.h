@@ -113,7 +113,9 @@ private:
   bool FromVTKDraw = false;
   int InDrawOrder = -1; // whether fragments store in draw order (-1: not asked yet)
   int Origin[2] = { 0, 0 };  // the viewport's origin in the window (gbuffer_images.glsl)
-  int CentralSample = 0; // of the framebuffer VTK draws into (FindCentralSample)
+  int Samples = -1;            // the framebuffer's sample count FindCentralSample last saw,
+  int CentralSample = 0;       // its sample nearest the pixel's centre,
+  float CentralDistance = 0.f; // and that sample's distance from it in pixels
   bool Drawn = false;        // DrawWithVTK drew VTK's image in the render that started at
   vtkMTimeType DrawnIn = 0;  // DrawnIn, and RenderVTK has not asked for it yet
   bool BlendWasEnabled[3] = { false, false, false };

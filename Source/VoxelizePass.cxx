@@ -383,7 +383,7 @@ namespace
 /// raise GL_INVALID_OPERATION.
 bool DrawsPointsAndLinesOnly(vtkActor* actor)
 {
-  auto* mapper = vtkPolyDataMapper::SafeDownCast(actor->GetMapper());
+  auto* mapper = vtkPolyDataMapper::SafeDownCast(actor ? actor->GetMapper() : nullptr);
   vtkDataObject* input = mapper ? mapper->GetInputDataObject(0, 0) : nullptr;
   return input && input->GetNumberOfElements(vtkDataObject::CELL) > 0 &&
     PointsAndLinesOnly(input);
@@ -398,7 +398,7 @@ void VoxelizePass::Render(const vtkRenderState* s)
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
     vtkActor* actor = vtkActor::SafeDownCast(s->GetPropArray()[i]);
-    if (actor && actor->GetMapper() && !DrawsPointsAndLinesOnly(actor))
+    if (!DrawsPointsAndLinesOnly(actor))
     {
       this->NumberOfRenderedProps += this->Copies.Draw(actor, s->GetRenderer());
     }
