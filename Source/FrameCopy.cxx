@@ -1,6 +1,7 @@
 #include "FrameCopy.h"
 
 #include "Frame.h"
+#include "GLHelpers.h"
 
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -12,38 +13,6 @@
 
 namespace voxelgi
 {
-
-namespace
-{
-/// Name, internal format, samples, width and height of what is attached to `attachment` of
-/// framebuffer `framebuffer`; false when it is neither a renderbuffer nor a 2D texture.
-bool DescribeAttachment(int framebuffer, GLenum attachment, int description[5])
-{
-  GLint type = GL_NONE, name = 0;
-  glGetNamedFramebufferAttachmentParameteriv(
-    framebuffer, attachment, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
-  glGetNamedFramebufferAttachmentParameteriv(
-    framebuffer, attachment, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, &name);
-  description[0] = name;
-  if (type == GL_RENDERBUFFER)
-  {
-    glGetNamedRenderbufferParameteriv(name, GL_RENDERBUFFER_INTERNAL_FORMAT, description + 1);
-    glGetNamedRenderbufferParameteriv(name, GL_RENDERBUFFER_SAMPLES, description + 2);
-    glGetNamedRenderbufferParameteriv(name, GL_RENDERBUFFER_WIDTH, description + 3);
-    glGetNamedRenderbufferParameteriv(name, GL_RENDERBUFFER_HEIGHT, description + 4);
-    return true;
-  }
-  if (type == GL_TEXTURE)
-  {
-    glGetTextureLevelParameteriv(name, 0, GL_TEXTURE_INTERNAL_FORMAT, description + 1);
-    glGetTextureLevelParameteriv(name, 0, GL_TEXTURE_SAMPLES, description + 2);
-    glGetTextureLevelParameteriv(name, 0, GL_TEXTURE_WIDTH, description + 3);
-    glGetTextureLevelParameteriv(name, 0, GL_TEXTURE_HEIGHT, description + 4);
-    return true;
-  }
-  return false;
-}
-}
 
 FrameCopy::FrameCopy() = default;
 FrameCopy::~FrameCopy() = default;
@@ -71,8 +40,8 @@ bool FrameCopy::Describe(const Frame& frame, Target& target)
   target.Viewport[1] = frame.Y;
   target.Viewport[2] = frame.Width;
   target.Viewport[3] = frame.Height;
-  return DescribeAttachment(framebuffer, buffer, target.Color) &&
-    DescribeAttachment(framebuffer, GL_DEPTH_ATTACHMENT, target.Depth) &&
+  return DescribeAttachment(framebuffer, buffer, target.Color) != GL_NONE &&
+    DescribeAttachment(framebuffer, GL_DEPTH_ATTACHMENT, target.Depth) != GL_NONE &&
     target.Color[2] == target.Depth[2] && target.Color[3] == target.Depth[3] &&
     target.Color[4] == target.Depth[4];
 }

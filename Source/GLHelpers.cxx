@@ -136,6 +136,11 @@ void GLProgram::SetVec2(const char* name, float x, float y)
   glUniform2f(glGetUniformLocation(this->Handle, name), x, y);
 }
 
+void GLProgram::SetIVec2(const char* name, int x, int y)
+{
+  glUniform2i(glGetUniformLocation(this->Handle, name), x, y);
+}
+
 void GLProgram::SetVec4(const char* name, const float* values)
 {
   glUniform4fv(glGetUniformLocation(this->Handle, name), 1, values);
@@ -355,18 +360,18 @@ int SamplerBindings::Add(const Volume3D& volume)
 
 int SamplerBindings::Add(const ShadowMapArray& maps)
 {
-  return this->AddArray(maps.GetTexture());
+  return this->AddTexture(maps.GetTexture(), GL_TEXTURE_2D_ARRAY);
 }
 
-int SamplerBindings::AddArray(unsigned int texture)
+int SamplerBindings::AddTexture(unsigned int texture, unsigned int target)
 {
   const int unit = this->Window->GetTextureUnitManager()->Allocate();
   if (unit >= 0)
   {
     this->Window->GetState()->vtkglActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
-    glBindTexture(GL_TEXTURE_2D_ARRAY, texture);
+    glBindTexture(target, texture);
   }
-  return this->Keep(unit, GL_TEXTURE_2D_ARRAY);
+  return this->Keep(unit, target);
 }
 
 //------------------------------------------------------------------------------
@@ -727,6 +732,43 @@ void BindImage2D(
   unsigned int unit, vtkTextureObject* texture, unsigned int access, unsigned int format)
 {
   glBindImageTexture(unit, texture->GetHandle(), 0, GL_FALSE, 0, access, format);
+}
+
+unsigned int DescribeAttachment(int framebuffer, unsigned int attachment, int description[5])
+{
+  GLint type = GL_NONE, name = 0;
+  glGetNamedFramebufferAttachmentParameteriv(
+    framebuffer, attachment, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
+  glGetNamedFramebufferAttachmentParameteriv(
+    framebuffer, attachment, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, &name);
+  description[0] = name;
+  if (type == GL_RENDERBUFFER)
+  {
+    glGetNamedRenderbufferParameteriv(name, GL_RENDERBUFFER_INTERNAL_FORMAT, description + 1);
+    glGetNamedRenderbufferParameteriv(name, GL_RENDERBUFFER_SAMPLES, description + 2);
+    glGetNamedRenderbufferParameteriv(name, GL_RENDERBUFFER_WIDTH, description + 3);
+    glGetNamedRenderbufferParameteriv(name, GL_RENDERBUFFER_HEIGHT, description + 4);
+    return GL_RENDERBUFFER;
+  }
+  if (type != GL_TEXTURE)
+  {
+    return GL_NONE;
+  }
+  GLint level = 0, layered = GL_FALSE, target = GL_NONE;
+  glGetNamedFramebufferAttachmentParameteriv(
+    framebuffer, attachment, GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL, &level);
+  glGetNamedFramebufferAttachmentParameteriv(
+    framebuffer, attachment, GL_FRAMEBUFFER_ATTACHMENT_LAYERED, &layered);
+  glGetTextureParameteriv(name, GL_TEXTURE_TARGET, &target);
+  if (level != 0 || layered || (target != GL_TEXTURE_2D && target != GL_TEXTURE_2D_MULTISAMPLE))
+  {
+    return GL_NONE;
+  }
+  glGetTextureLevelParameteriv(name, 0, GL_TEXTURE_INTERNAL_FORMAT, description + 1);
+  glGetTextureLevelParameteriv(name, 0, GL_TEXTURE_SAMPLES, description + 2);
+  glGetTextureLevelParameteriv(name, 0, GL_TEXTURE_WIDTH, description + 3);
+  glGetTextureLevelParameteriv(name, 0, GL_TEXTURE_HEIGHT, description + 4);
+  return GL_TEXTURE;
 }
 
 ScopedTextures::ScopedTextures(std::initializer_list<vtkTextureObject*> textures)

@@ -59,6 +59,7 @@ public:
   void SetFloat(const char* name, float value);
   void SetVec3Array(const char* name, int count, const float* values);
   void SetVec2(const char* name, float x, float y);
+  void SetIVec2(const char* name, int x, int y);
   void SetVec4(const char* name, const float* values);
   /// Column-major 4x4 matrices.
   void SetMat4Array(const char* name, int count, const float* values);
@@ -138,8 +139,8 @@ public:
 
   int Add(const Volume3D& volume);
   int Add(const ShadowMapArray& maps);
-  /// Bind the GL_TEXTURE_2D_ARRAY texture named `texture`.
-  int AddArray(unsigned int texture);
+  /// Bind the texture named `texture`, whose target is `target` (e.g. GL_TEXTURE_2D_ARRAY).
+  int AddTexture(unsigned int texture, unsigned int target);
   /// False when a unit could not be had (the window's units are all taken): a dispatch
   /// would then sample whatever the program's stale sampler uniforms point at; skip it.
   bool Complete() const { return !this->Failed; }
@@ -253,6 +254,12 @@ private:
 /// Bind level 0 of a 2D texture to image unit `unit` as `format` (e.g. GL_RGBA16F).
 void BindImage2D(unsigned int unit, vtkTextureObject* texture, unsigned int access,
   unsigned int format);
+
+/// What is attached to `attachment` of framebuffer `framebuffer`: its name, internal
+/// format, samples (0 without multisampling), width and height in `description`; returns
+/// GL_RENDERBUFFER, GL_TEXTURE (level 0 of a 2D or 2D multisample texture) or GL_NONE
+/// (nothing, or an attachment described otherwise: a layer, a cube face, a mip level).
+unsigned int DescribeAttachment(int framebuffer, unsigned int attachment, int description[5]);
 
 /// Texture units for a dispatch's 2D inputs: activates each texture, deactivates them after.
 class ScopedTextures

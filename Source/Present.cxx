@@ -109,8 +109,12 @@ void Present::Run(const Frame& frame)
     this->OpaqueProps = mode == Mode::Samples ? this->GBuffer.RenderVTK(frame)
                                               : this->GBuffer.GetNumberOfRenderedProps();
     ScopedStage stage(*frame.Clock, stage::Present);
-    this->Draw(
-      frame, mode, this->Compositor.GetPresentScale(), this->Compositor.GetPresentAdd());
+    vtkTextureObject* scale = this->Compositor.GetPresentScale();
+    vtkTextureObject* add = this->Compositor.GetPresentAdd();
+    if (mode != Mode::Samples || !this->Blend.Run(frame, scale, add, this->GBuffer.GetDepth()))
+    {
+      this->Draw(frame, mode, scale, add);
+    }
     if (unchanged)
     {
       this->Unchanged.Store(frame);
@@ -233,6 +237,7 @@ void Present::ReleaseGraphicsResources(vtkWindow* window)
     this->Quad->ReleaseGraphicsResources(window);
     this->Quad.reset();
   }
+  this->Blend.ReleaseGraphicsResources();
   this->Unchanged.ReleaseGraphicsResources(window);
   if (this->FXAA)
   {

@@ -2,12 +2,14 @@
  * Present stage (present.frag): VTK draws its camera, lights and opaque steps into its own
  * framebuffer as it would without the pass (its multisampling, depth and look kept, through
  * the G-buffer's shaders), then the composite is blended into each of its samples (s * scale +
- * add, depth-tested so that edges keep VTK's coverage), or, in a voxel debug view, the debug
+ * add, for the samples of the G-buffer's surface, so that edges keep VTK's coverage: a
+ * dispatch, PresentSamples, where the framebuffer's attachments are textures, else a
+ * depth-tested quad), or, in a voxel debug view, the debug
  * image is drawn over VTK's image. A framebuffer of one sample takes the G-buffer's own draw
  * of those steps instead (its colour and depth, with the composite applied): VTK's draw would
  * repeat it. A frame that shows the last image again copies it back
- * (FrameCopy) where the framebuffer allows. The one full-screen fragment pass of the pipeline: the
- * framebuffer may be VTK's, ParaView's or a Qt widget's. Then VTK's own remaining steps draw
+ * (FrameCopy) where the framebuffer allows. The framebuffer may be VTK's, ParaView's or a Qt
+ * widget's. Then VTK's own remaining steps draw
  * as VTK would draw them, with the renderer's FXAA (vtkRenderer::UseFXAA) before volumes and
  * overlays, where VTK applies it; the volumes in the voxels and the translucent surfaces add
  * the indirect light that reaches them (VolumeLighting, TranslucentLighting).
@@ -16,6 +18,7 @@
 #define VoxelGIPresent_h
 
 #include "FrameCopy.h"
+#include "PresentSamples.h"
 
 #include "vtkNew.h"          // for vtkNew
 #include "vtkSmartPointer.h" // for vtkSmartPointer
@@ -70,6 +73,7 @@ private:
   const DebugView& Debug;
   vtkNew<VolumeLighting> Volumes; // VTK's volumes lit by GI
   vtkNew<TranslucentLighting> Translucent; // VTK's translucent surfaces lit by GI
+  PresentSamples Blend; // the composite into VTK's samples, where its framebuffer allows
   std::unique_ptr<vtkOpenGLQuadHelper> Quad;
   FrameCopy Unchanged; // the last presented image, for frames that show it again
   vtkSmartPointer<vtkOpenGLFXAAFilter> FXAA;

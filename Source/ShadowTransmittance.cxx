@@ -144,7 +144,8 @@ void ShadowTransmittance::End(vtkOpenGLRenderWindow* window)
 
 void ShadowTransmittance::Bind(GLProgram& program, SamplerBindings& samplers) const
 {
-  program.SetInt("shadowTransmittance", samplers.AddArray(this->Texture ? this->Texture : this->Clear));
+  program.SetInt("shadowTransmittance", samplers.AddTexture(
+    this->Texture ? this->Texture : this->Clear, GL_TEXTURE_2D_ARRAY));
 }
 
 void ShadowTransmittance::ReleaseGraphicsResources()
