@@ -68,9 +68,10 @@ vtkPolyData* ImposterProxies::Input(vtkActor* actor)
 
 bool ImposterProxies::Spheres(vtkActor* actor)
 {
+  // The property first: reading the input asks the mapper's pipeline, in every frame's scan.
   vtkProperty* property = actor->GetProperty();
-  vtkPolyData* input = Input(actor);
-  if (!input || !property->GetRenderPointsAsSpheres())
+  vtkPolyData* input = property->GetRenderPointsAsSpheres() ? Input(actor) : nullptr;
+  if (!input)
   {
     return false;
   }
@@ -84,10 +85,11 @@ bool ImposterProxies::Spheres(vtkActor* actor)
 bool ImposterProxies::Tubes(vtkActor* actor)
 {
   vtkProperty* property = actor->GetProperty();
-  vtkPolyData* input = Input(actor);
+  vtkPolyData* input = property->GetRenderLinesAsTubes() && property->GetRepresentation() != VTK_POINTS
+    ? Input(actor)
+    : nullptr;
   // Lines with nothing of area beside them (a surface's edges keep the surface's path).
-  return input && property->GetRenderLinesAsTubes() &&
-    property->GetRepresentation() != VTK_POINTS && input->GetNumberOfLines() > 0 &&
+  return input && input->GetNumberOfLines() > 0 &&
     input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0;
 }
 

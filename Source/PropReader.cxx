@@ -9,6 +9,7 @@
 
 #include "vtkAbstractVolumeMapper.h"
 #include "vtkActor.h"
+#include "vtkAlgorithmOutput.h"
 #include "vtkAssembly.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
@@ -180,7 +181,16 @@ vtkMTimeType InputsTime(vtkAlgorithm* algorithm, vtkMTimeType* firstData = nullp
   {
     for (int c = 0; c < algorithm->GetNumberOfInputConnections(port); ++c)
     {
-      if (vtkDataObject* data = algorithm->GetInputDataObject(port, c))
+      // The connection once, its producer's output from there (GetInputDataObject and
+      // GetInputAlgorithm would each look the connection up again, in every frame's scan).
+      vtkAlgorithmOutput* connection = algorithm->GetInputConnection(port, c);
+      vtkAlgorithm* producer = connection ? connection->GetProducer() : nullptr;
+      if (!producer)
+      {
+        continue;
+      }
+      t = std::max(t, producer->GetMTime());
+      if (vtkDataObject* data = producer->GetOutputDataObject(connection->GetIndex()))
       {
         const vtkMTimeType modified = data->GetMTime();
         if (firstData && port == 0 && c == 0)
@@ -188,10 +198,6 @@ vtkMTimeType InputsTime(vtkAlgorithm* algorithm, vtkMTimeType* firstData = nullp
           *firstData = modified;
         }
         t = std::max(t, modified);
-      }
-      if (vtkAlgorithm* producer = algorithm->GetInputAlgorithm(port, c))
-      {
-        t = std::max(t, producer->GetMTime());
       }
     }
   }
