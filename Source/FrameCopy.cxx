@@ -27,23 +27,17 @@ bool FrameCopy::Target::operator==(const Target& other) const
 
 bool FrameCopy::Describe(const Frame& frame, Target& target)
 {
-  GLint framebuffer = 0, buffer = GL_NONE;
-  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
-  glGetIntegerv(GL_DRAW_BUFFER0, &buffer);
-  if (framebuffer == 0 || buffer < GL_COLOR_ATTACHMENT0 || buffer > GL_COLOR_ATTACHMENT15)
+  unsigned int types[2];
+  if (!DescribeDrawTarget(target.Framebuffer, target.Buffer, target.Color, target.Depth, types))
   {
-    return false; // a default framebuffer: its buffers cannot be described here
+    return false;
   }
-  target.Framebuffer = framebuffer;
-  target.Buffer = buffer;
   target.Viewport[0] = frame.X;
   target.Viewport[1] = frame.Y;
   target.Viewport[2] = frame.Width;
   target.Viewport[3] = frame.Height;
-  return DescribeAttachment(framebuffer, buffer, target.Color) != GL_NONE &&
-    DescribeAttachment(framebuffer, GL_DEPTH_ATTACHMENT, target.Depth) != GL_NONE &&
-    target.Color[2] == target.Depth[2] && target.Color[3] == target.Depth[3] &&
-    target.Color[4] == target.Depth[4];
+  return types[0] != GL_NONE && types[1] != GL_NONE && target.Color[2] == target.Depth[2] &&
+    target.Color[3] == target.Depth[3] && target.Color[4] == target.Depth[4];
 }
 
 void FrameCopy::Store(const Frame& frame)

@@ -771,6 +771,20 @@ unsigned int DescribeAttachment(int framebuffer, unsigned int attachment, int de
   return GL_TEXTURE;
 }
 
+bool DescribeDrawTarget(
+  int& framebuffer, int& buffer, int color[5], int depth[5], unsigned int types[2])
+{
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
+  glGetIntegerv(GL_DRAW_BUFFER0, &buffer);
+  if (framebuffer == 0 || buffer < GL_COLOR_ATTACHMENT0 || buffer > GL_COLOR_ATTACHMENT15)
+  {
+    return false;
+  }
+  types[0] = DescribeAttachment(framebuffer, static_cast<unsigned int>(buffer), color);
+  types[1] = DescribeAttachment(framebuffer, GL_DEPTH_ATTACHMENT, depth);
+  return true;
+}
+
 ScopedTextures::ScopedTextures(std::initializer_list<vtkTextureObject*> textures)
 {
   for (vtkTextureObject* texture : textures)

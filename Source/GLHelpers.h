@@ -261,6 +261,12 @@ void BindImage2D(unsigned int unit, vtkTextureObject* texture, unsigned int acce
 /// (nothing, or an attachment described otherwise: a layer, a cube face, a mip level).
 unsigned int DescribeAttachment(int framebuffer, unsigned int attachment, int description[5]);
 
+/// The bound draw framebuffer, its draw buffer (GL_DRAW_BUFFER0) and what DescribeAttachment
+/// says of that colour attachment and of the depth attachment (`types`: what it returned for
+/// each); false for a default framebuffer, whose buffers cannot be described.
+bool DescribeDrawTarget(
+  int& framebuffer, int& buffer, int color[5], int depth[5], unsigned int types[2]);
+
 /// Texture units for a dispatch's 2D inputs: activates each texture, deactivates them after.
 class ScopedTextures
 {

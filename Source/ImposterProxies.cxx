@@ -85,9 +85,9 @@ bool ImposterProxies::Spheres(vtkActor* actor)
 bool ImposterProxies::Tubes(vtkActor* actor)
 {
   vtkProperty* property = actor->GetProperty();
-  vtkPolyData* input = property->GetRenderLinesAsTubes() && property->GetRepresentation() != VTK_POINTS
-    ? Input(actor)
-    : nullptr;
+  const bool tubes =
+    property->GetRenderLinesAsTubes() && property->GetRepresentation() != VTK_POINTS;
+  vtkPolyData* input = tubes ? Input(actor) : nullptr;
   // Lines with nothing of area beside them (a surface's edges keep the surface's path).
   return input && input->GetNumberOfLines() > 0 &&
     input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0;

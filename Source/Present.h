@@ -1,18 +1,17 @@
 /**
- * Present stage (present.frag): VTK draws its camera, lights and opaque steps into its own
- * framebuffer as it would without the pass (its multisampling, depth and look kept, through
- * the G-buffer's shaders), then the composite is blended into each of its samples (s * scale +
- * add, for the samples of the G-buffer's surface, so that edges keep VTK's coverage: a
- * dispatch, PresentSamples, where the framebuffer's attachments are textures, else a
- * depth-tested quad), or, in a voxel debug view, the debug
- * image is drawn over VTK's image. A framebuffer of one sample takes the G-buffer's own draw
- * of those steps instead (its colour and depth, with the composite applied): VTK's draw would
- * repeat it. A frame that shows the last image again copies it back
- * (FrameCopy) where the framebuffer allows. The framebuffer may be VTK's, ParaView's or a Qt
- * widget's. Then VTK's own remaining steps draw
- * as VTK would draw them, with the renderer's FXAA (vtkRenderer::UseFXAA) before volumes and
- * overlays, where VTK applies it; the volumes in the voxels and the translucent surfaces add
- * the indirect light that reaches them (VolumeLighting, TranslucentLighting).
+ * Present stage (present.frag, present_samples.comp): VTK draws its camera, lights and opaque
+ * steps into its own framebuffer as it would without the pass (its multisampling, depth and
+ * look kept, through the G-buffer's shaders), then the composite is blended into each of its
+ * samples (s * scale + add, for the samples of the G-buffer's surface, so that edges keep
+ * VTK's coverage: a dispatch, PresentSamples, where the framebuffer's attachments are
+ * textures, else a depth-tested quad), or, in a voxel debug view, the debug image is drawn
+ * over VTK's image. A framebuffer of one sample takes the G-buffer's own draw of those steps
+ * instead (its colour and depth, with the composite applied): VTK's draw would repeat it. A
+ * frame that shows the last image again copies it back (FrameCopy) where the framebuffer
+ * allows. The framebuffer may be VTK's, ParaView's or a Qt widget's. Then VTK's own remaining
+ * steps draw as VTK would draw them, with the renderer's FXAA (vtkRenderer::UseFXAA) before
+ * volumes and overlays, where VTK applies it; the volumes in the voxels and the translucent
+ * surfaces add the indirect light that reaches them (VolumeLighting, TranslucentLighting).
  */
 #ifndef VoxelGIPresent_h
 #define VoxelGIPresent_h

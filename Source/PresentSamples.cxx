@@ -33,17 +33,11 @@ const char* ImageFormat(int internalFormat)
 bool PresentSamples::Run(
   const Frame& frame, vtkTextureObject* scale, vtkTextureObject* add, vtkTextureObject* depth)
 {
-  GLint framebuffer = 0, buffer = GL_NONE;
-  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
-  glGetIntegerv(GL_DRAW_BUFFER0, &buffer);
-  if (framebuffer == 0 || buffer < GL_COLOR_ATTACHMENT0 || buffer > GL_COLOR_ATTACHMENT15)
-  {
-    return false; // a default framebuffer: its buffers are no textures
-  }
-  int color[5] = {}, vtkDepth[5] = {};
-  if (DescribeAttachment(framebuffer, static_cast<unsigned int>(buffer), color) != GL_TEXTURE ||
-    DescribeAttachment(framebuffer, GL_DEPTH_ATTACHMENT, vtkDepth) != GL_TEXTURE ||
-    color[2] != vtkDepth[2] || !ImageFormat(color[1]) || frame.X + frame.Width > color[3] ||
+  int framebuffer = 0, buffer = 0, color[5] = {}, vtkDepth[5] = {};
+  unsigned int types[2];
+  if (!DescribeDrawTarget(framebuffer, buffer, color, vtkDepth, types) ||
+    types[0] != GL_TEXTURE || types[1] != GL_TEXTURE || color[2] != vtkDepth[2] ||
+    !ImageFormat(color[1]) || frame.X + frame.Width > color[3] ||
     frame.Y + frame.Height > color[4])
   {
     return false;

@@ -233,8 +233,7 @@ public:
     vtkOpenGLState::ScopedglEnableDisable scissor(state, GL_SCISSOR_TEST);
     state->vtkglDisable(GL_SCISSOR_TEST);
     const int extent[4] = { 0, size[0], 0, size[1] };
-    vtkOpenGLFramebufferObject::Blit(
-      extent, extent, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    vtkOpenGLFramebufferObject::Blit(extent, extent, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     state->PopReadFramebufferBinding();
   }
   void ReleaseGraphicsResources(vtkWindow* window) override
@@ -373,7 +372,8 @@ int TestGIAntiAliasing(int argc, char* argv[])
       VOXELGI_CHECK(application->GetGIActive(), "GI did not run in the renderbuffers");
       auto drawn = Pixels(window);
       const int off = LargestDifference(on ? own : plain, drawn);
-      std::cout << (on ? "defaults: from the image in VTK's framebuffer " : "GI terms off: from plain VTK ")
+      std::cout << (on ? "defaults: from the image in VTK's framebuffer "
+                       : "GI terms off: from plain VTK ")
                 << off << " levels" << std::endl;
       VOXELGI_CHECK(off <= 2, "the image in renderbuffers differs");
       if (on)
